@@ -10325,24 +10325,24 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [7:0] geometry$vc$7;
     reg  [7:0] geometry$vc$8;
     reg  [5:0] geometry$crosses;
-    wire  [1345:0] geometry$word;
-    reg  [1345:0] geo$0$d;
-    wire  [1345:0] geo$0$q;
+    wire  [1351:0] geometry$word;
+    reg  [1351:0] geo$0$d;
+    wire  [1351:0] geo$0$q;
     reg  geo$0$clock;
-    reg  [1345:0] geo$1$d;
-    wire  [1345:0] geo$1$q;
+    reg  [1351:0] geo$1$d;
+    wire  [1351:0] geo$1$q;
     reg  geo$1$clock;
-    reg  [1345:0] geo$2$d;
-    wire  [1345:0] geo$2$q;
+    reg  [1351:0] geo$2$d;
+    wire  [1351:0] geo$2$q;
     reg  geo$2$clock;
-    reg  [1345:0] geo$3$d;
-    wire  [1345:0] geo$3$q;
+    reg  [1351:0] geo$3$d;
+    wire  [1351:0] geo$3$q;
     reg  geo$3$clock;
-    reg  [1345:0] geo$4$d;
-    wire  [1345:0] geo$4$q;
+    reg  [1351:0] geo$4$d;
+    wire  [1351:0] geo$4$q;
     reg  geo$4$clock;
-    reg  [1345:0] geo$5$d;
-    wire  [1345:0] geo$5$q;
+    reg  [1351:0] geo$5$d;
+    wire  [1351:0] geo$5$q;
     reg  geo$5$clock;
     reg  sign$0$d;
     wire  sign$0$q;
@@ -10614,7 +10614,7 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     reg  [20:0] rho$17$d;
     wire  [20:0] rho$17$q;
     reg  rho$17$clock;
-    reg  [1345:0] g0$word;
+    reg  [1351:0] g0$word;
     reg  g0$maj_left;
     reg  [18:0] g0$start_x$0;
     reg  [18:0] g0$start_x$1;
@@ -10644,6 +10644,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     wire  [12:0] g0$count$0;
     wire  [12:0] g0$count$1;
     wire  [12:0] g0$count$2;
+    wire  g0$used$0;
+    wire  g0$used$1;
+    wire  g0$used$2;
+    wire  g0$step$0;
+    wire  g0$step$1;
+    wire  g0$step$2;
     wire  [18:0] g0$toff$0;
     wire  [18:0] g0$toff$1;
     wire  [18:0] g0$toff$2;
@@ -10671,7 +10677,7 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     wire  [39:0] g0$attr0$1;
     wire  [39:0] g0$attr0$2;
     wire  [39:0] g0$attr0$3;
-    reg  [1345:0] g1$word;
+    reg  [1351:0] g1$word;
     reg  g1$maj_left;
     reg  [18:0] g1$start_x$0;
     reg  [18:0] g1$start_x$1;
@@ -10701,6 +10707,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     wire  [12:0] g1$count$0;
     wire  [12:0] g1$count$1;
     wire  [12:0] g1$count$2;
+    wire  g1$used$0;
+    wire  g1$used$1;
+    wire  g1$used$2;
+    wire  g1$step$0;
+    wire  g1$step$1;
+    wire  g1$step$2;
     wire  [18:0] g1$toff$0;
     wire  [18:0] g1$toff$1;
     wire  [18:0] g1$toff$2;
@@ -10728,7 +10740,7 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     wire  [39:0] g1$attr0$1;
     wire  [39:0] g1$attr0$2;
     wire  [39:0] g1$attr0$3;
-    reg  [1345:0] g2$word;
+    reg  [1351:0] g2$word;
     reg  g2$maj_left;
     reg  [18:0] g2$start_x$0;
     reg  [18:0] g2$start_x$1;
@@ -10758,6 +10770,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     wire  [12:0] g2$count$0;
     wire  [12:0] g2$count$1;
     wire  [12:0] g2$count$2;
+    wire  g2$used$0;
+    wire  g2$used$1;
+    wire  g2$used$2;
+    wire  g2$step$0;
+    wire  g2$step$1;
+    wire  g2$step$2;
     wire  [18:0] g2$toff$0;
     wire  [18:0] g2$toff$1;
     wire  [18:0] g2$toff$2;
@@ -10785,7 +10803,7 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     wire  [39:0] g2$attr0$1;
     wire  [39:0] g2$attr0$2;
     wire  [39:0] g2$attr0$3;
-    reg  [1345:0] g3$word;
+    reg  [1351:0] g3$word;
     reg  g3$maj_left;
     reg  [18:0] g3$start_x$0;
     reg  [18:0] g3$start_x$1;
@@ -10815,6 +10833,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     wire  [12:0] g3$count$0;
     wire  [12:0] g3$count$1;
     wire  [12:0] g3$count$2;
+    wire  g3$used$0;
+    wire  g3$used$1;
+    wire  g3$used$2;
+    wire  g3$step$0;
+    wire  g3$step$1;
+    wire  g3$step$2;
     wire  [18:0] g3$toff$0;
     wire  [18:0] g3$toff$1;
     wire  [18:0] g3$toff$2;
@@ -10842,7 +10866,7 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     wire  [39:0] g3$attr0$1;
     wire  [39:0] g3$attr0$2;
     wire  [39:0] g3$attr0$3;
-    reg  [1345:0] g4$word;
+    reg  [1351:0] g4$word;
     reg  g4$maj_left;
     reg  [18:0] g4$start_x$0;
     reg  [18:0] g4$start_x$1;
@@ -10872,6 +10896,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     wire  [12:0] g4$count$0;
     wire  [12:0] g4$count$1;
     wire  [12:0] g4$count$2;
+    wire  g4$used$0;
+    wire  g4$used$1;
+    wire  g4$used$2;
+    wire  g4$step$0;
+    wire  g4$step$1;
+    wire  g4$step$2;
     wire  [18:0] g4$toff$0;
     wire  [18:0] g4$toff$1;
     wire  [18:0] g4$toff$2;
@@ -10899,7 +10929,7 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     wire  [39:0] g4$attr0$1;
     wire  [39:0] g4$attr0$2;
     wire  [39:0] g4$attr0$3;
-    reg  [1345:0] g5$word;
+    reg  [1351:0] g5$word;
     reg  g5$maj_left;
     reg  [18:0] g5$start_x$0;
     reg  [18:0] g5$start_x$1;
@@ -10929,6 +10959,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
     wire  [12:0] g5$count$0;
     wire  [12:0] g5$count$1;
     wire  [12:0] g5$count$2;
+    wire  g5$used$0;
+    wire  g5$used$1;
+    wire  g5$used$2;
+    wire  g5$step$0;
+    wire  g5$step$1;
+    wire  g5$step$2;
     wire  [18:0] g5$toff$0;
     wire  [18:0] g5$toff$1;
     wire  [18:0] g5$toff$2;
@@ -12252,6 +12288,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .count$0(g0$count$0),
         .count$1(g0$count$1),
         .count$2(g0$count$2),
+        .used$0(g0$used$0),
+        .used$1(g0$used$1),
+        .used$2(g0$used$2),
+        .step$0(g0$step$0),
+        .step$1(g0$step$1),
+        .step$2(g0$step$2),
         .toff$0(g0$toff$0),
         .toff$1(g0$toff$1),
         .toff$2(g0$toff$2),
@@ -12311,6 +12353,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .count$0(g1$count$0),
         .count$1(g1$count$1),
         .count$2(g1$count$2),
+        .used$0(g1$used$0),
+        .used$1(g1$used$1),
+        .used$2(g1$used$2),
+        .step$0(g1$step$0),
+        .step$1(g1$step$1),
+        .step$2(g1$step$2),
         .toff$0(g1$toff$0),
         .toff$1(g1$toff$1),
         .toff$2(g1$toff$2),
@@ -12370,6 +12418,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .count$0(g2$count$0),
         .count$1(g2$count$1),
         .count$2(g2$count$2),
+        .used$0(g2$used$0),
+        .used$1(g2$used$1),
+        .used$2(g2$used$2),
+        .step$0(g2$step$0),
+        .step$1(g2$step$1),
+        .step$2(g2$step$2),
         .toff$0(g2$toff$0),
         .toff$1(g2$toff$1),
         .toff$2(g2$toff$2),
@@ -12429,6 +12483,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .count$0(g3$count$0),
         .count$1(g3$count$1),
         .count$2(g3$count$2),
+        .used$0(g3$used$0),
+        .used$1(g3$used$1),
+        .used$2(g3$used$2),
+        .step$0(g3$step$0),
+        .step$1(g3$step$1),
+        .step$2(g3$step$2),
         .toff$0(g3$toff$0),
         .toff$1(g3$toff$1),
         .toff$2(g3$toff$2),
@@ -12488,6 +12548,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .count$0(g4$count$0),
         .count$1(g4$count$1),
         .count$2(g4$count$2),
+        .used$0(g4$used$0),
+        .used$1(g4$used$1),
+        .used$2(g4$used$2),
+        .step$0(g4$step$0),
+        .step$1(g4$step$1),
+        .step$2(g4$step$2),
         .toff$0(g4$toff$0),
         .toff$1(g4$toff$1),
         .toff$2(g4$toff$2),
@@ -12547,6 +12613,12 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         .count$0(g5$count$0),
         .count$1(g5$count$1),
         .count$2(g5$count$2),
+        .used$0(g5$used$0),
+        .used$1(g5$used$1),
+        .used$2(g5$used$2),
+        .step$0(g5$step$0),
+        .step$1(g5$step$1),
+        .step$2(g5$step$2),
         .toff$0(g5$toff$0),
         .toff$1(g5$toff$1),
         .toff$2(g5$toff$2),
@@ -16396,42 +16468,42 @@ module raster_top$fragments$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0
         end
         if (at_iss$1) begin
             div_v$d = 1'b1;
-            if (g0$count$0 != 32'h0) begin
+            if (g0$used$0) begin
                 div_n$d = num$0$q[(32'h0)+:(58)];
                 div_d$d = g0$ed16$0;
             end
         end
         if (at_iss$2) begin
             div_v$d = 1'b1;
-            if (g0$count$0 > 32'h1) begin
+            if (g0$step$0) begin
                 div_n$d = g0$edx$0[(32'h0)+:(58)];
                 div_d$d = g0$edy_d$0;
             end
         end
         if (at_iss$3) begin
             div_v$d = 1'b1;
-            if (g0$count$1 != 32'h0) begin
+            if (g0$used$1) begin
                 div_n$d = num$1$q[(32'h0)+:(58)];
                 div_d$d = g0$ed16$1;
             end
         end
         if (at_iss$4) begin
             div_v$d = 1'b1;
-            if (g0$count$1 > 32'h1) begin
+            if (g0$step$1) begin
                 div_n$d = g0$edx$1[(32'h0)+:(58)];
                 div_d$d = g0$edy_d$1;
             end
         end
         if (at_iss$5) begin
             div_v$d = 1'b1;
-            if (g0$count$2 != 32'h0) begin
+            if (g0$used$2) begin
                 div_n$d = num$2$q[(32'h0)+:(58)];
                 div_d$d = g0$ed16$2;
             end
         end
         if (at_iss$6) begin
             div_v$d = 1'b1;
-            if (g0$count$2 > 32'h1) begin
+            if (g0$step$2) begin
                 div_n$d = g0$edx$2[(32'h0)+:(58)];
                 div_d$d = g0$edy_d$2;
             end
@@ -28071,10 +28143,10 @@ module raster_top$fragments$core$triangle_setup$exp$5(d,q,clock);
 endmodule // raster_top$fragments$core$triangle_setup$exp$5
 
 
-module raster_top$fragments$core$triangle_setup$g0(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$fragments$core$triangle_setup$g0(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,used$0,used$1,used$2,step$0,step$1,step$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
-    input wire  [1345:0] word;
+    input wire  [1351:0] word;
     input wire  maj_left;
     input wire  [18:0] start_x$0;
     input wire  [18:0] start_x$1;
@@ -28104,6 +28176,12 @@ module raster_top$fragments$core$triangle_setup$g0(word,maj_left,start_x$0,start
     output reg  [12:0] count$0;
     output reg  [12:0] count$1;
     output reg  [12:0] count$2;
+    output reg  used$0;
+    output reg  used$1;
+    output reg  used$2;
+    output reg  step$0;
+    output reg  step$1;
+    output reg  step$2;
     output reg  [18:0] toff$0;
     output reg  [18:0] toff$1;
     output reg  [18:0] toff$2;
@@ -28163,31 +28241,37 @@ module raster_top$fragments$core$triangle_setup$g0(word,maj_left,start_x$0,start
         count$0 = word[(64'h2ec)+:(13)];
         count$1 = word[(64'h2f9)+:(13)];
         count$2 = word[(64'h306)+:(13)];
-        toff$0 = word[(64'h313)+:(19)];
-        toff$1 = word[(64'h326)+:(19)];
-        toff$2 = word[(64'h339)+:(19)];
-        xf$0 = word[(64'h34c)+:(19)];
-        xf$1 = word[(64'h35f)+:(19)];
-        xf$2 = word[(64'h372)+:(19)];
-        xi$0 = word[(64'h385)+:(19)];
-        xi$1 = word[(64'h398)+:(19)];
-        xi$2 = word[(64'h3ab)+:(19)];
-        off_y$0 = word[(64'h3be)+:(19)];
-        off_y$1 = word[(64'h3d1)+:(19)];
-        off_y$2 = word[(64'h3e4)+:(19)];
-        dmaj$0 = word[(64'h3f7)+:(19)];
-        dmaj$1 = word[(64'h40a)+:(19)];
-        dmaj$2 = word[(64'h41d)+:(19)];
-        dmaj$3 = word[(64'h430)+:(19)];
-        dbot$0 = word[(64'h443)+:(19)];
-        dbot$1 = word[(64'h456)+:(19)];
-        dbot$2 = word[(64'h469)+:(19)];
-        dbot$3 = word[(64'h47c)+:(19)];
-        attr0$0 = word[(64'h48f)+:(40)];
-        attr0$1 = word[(64'h4b7)+:(40)];
-        attr0$2 = word[(64'h4df)+:(40)];
-        attr0$3 = word[(64'h507)+:(40)];
-        xn0 = word[(64'h52f)+:(19)];
+        used$0 = word[(64'h313)+:(1)];
+        used$1 = word[(64'h314)+:(1)];
+        used$2 = word[(64'h315)+:(1)];
+        step$0 = word[(64'h316)+:(1)];
+        step$1 = word[(64'h317)+:(1)];
+        step$2 = word[(64'h318)+:(1)];
+        toff$0 = word[(64'h319)+:(19)];
+        toff$1 = word[(64'h32c)+:(19)];
+        toff$2 = word[(64'h33f)+:(19)];
+        xf$0 = word[(64'h352)+:(19)];
+        xf$1 = word[(64'h365)+:(19)];
+        xf$2 = word[(64'h378)+:(19)];
+        xi$0 = word[(64'h38b)+:(19)];
+        xi$1 = word[(64'h39e)+:(19)];
+        xi$2 = word[(64'h3b1)+:(19)];
+        off_y$0 = word[(64'h3c4)+:(19)];
+        off_y$1 = word[(64'h3d7)+:(19)];
+        off_y$2 = word[(64'h3ea)+:(19)];
+        dmaj$0 = word[(64'h3fd)+:(19)];
+        dmaj$1 = word[(64'h410)+:(19)];
+        dmaj$2 = word[(64'h423)+:(19)];
+        dmaj$3 = word[(64'h436)+:(19)];
+        dbot$0 = word[(64'h449)+:(19)];
+        dbot$1 = word[(64'h45c)+:(19)];
+        dbot$2 = word[(64'h46f)+:(19)];
+        dbot$3 = word[(64'h482)+:(19)];
+        attr0$0 = word[(64'h495)+:(40)];
+        attr0$1 = word[(64'h4bd)+:(40)];
+        attr0$2 = word[(64'h4e5)+:(40)];
+        attr0$3 = word[(64'h50d)+:(40)];
+        xn0 = word[(64'h535)+:(19)];
         edy_d$0 = ((edy$0) & 34'h3ffffffff);
         edy_d$1 = ((edy$1) & 34'h3ffffffff);
         edy_d$2 = ((edy$2) & 34'h3ffffffff);
@@ -28214,10 +28298,10 @@ module raster_top$fragments$core$triangle_setup$g0(word,maj_left,start_x$0,start
 endmodule // raster_top$fragments$core$triangle_setup$g0
 
 
-module raster_top$fragments$core$triangle_setup$g1(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$fragments$core$triangle_setup$g1(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,used$0,used$1,used$2,step$0,step$1,step$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
-    input wire  [1345:0] word;
+    input wire  [1351:0] word;
     input wire  maj_left;
     input wire  [18:0] start_x$0;
     input wire  [18:0] start_x$1;
@@ -28247,6 +28331,12 @@ module raster_top$fragments$core$triangle_setup$g1(word,maj_left,start_x$0,start
     output reg  [12:0] count$0;
     output reg  [12:0] count$1;
     output reg  [12:0] count$2;
+    output reg  used$0;
+    output reg  used$1;
+    output reg  used$2;
+    output reg  step$0;
+    output reg  step$1;
+    output reg  step$2;
     output reg  [18:0] toff$0;
     output reg  [18:0] toff$1;
     output reg  [18:0] toff$2;
@@ -28306,31 +28396,37 @@ module raster_top$fragments$core$triangle_setup$g1(word,maj_left,start_x$0,start
         count$0 = word[(64'h2ec)+:(13)];
         count$1 = word[(64'h2f9)+:(13)];
         count$2 = word[(64'h306)+:(13)];
-        toff$0 = word[(64'h313)+:(19)];
-        toff$1 = word[(64'h326)+:(19)];
-        toff$2 = word[(64'h339)+:(19)];
-        xf$0 = word[(64'h34c)+:(19)];
-        xf$1 = word[(64'h35f)+:(19)];
-        xf$2 = word[(64'h372)+:(19)];
-        xi$0 = word[(64'h385)+:(19)];
-        xi$1 = word[(64'h398)+:(19)];
-        xi$2 = word[(64'h3ab)+:(19)];
-        off_y$0 = word[(64'h3be)+:(19)];
-        off_y$1 = word[(64'h3d1)+:(19)];
-        off_y$2 = word[(64'h3e4)+:(19)];
-        dmaj$0 = word[(64'h3f7)+:(19)];
-        dmaj$1 = word[(64'h40a)+:(19)];
-        dmaj$2 = word[(64'h41d)+:(19)];
-        dmaj$3 = word[(64'h430)+:(19)];
-        dbot$0 = word[(64'h443)+:(19)];
-        dbot$1 = word[(64'h456)+:(19)];
-        dbot$2 = word[(64'h469)+:(19)];
-        dbot$3 = word[(64'h47c)+:(19)];
-        attr0$0 = word[(64'h48f)+:(40)];
-        attr0$1 = word[(64'h4b7)+:(40)];
-        attr0$2 = word[(64'h4df)+:(40)];
-        attr0$3 = word[(64'h507)+:(40)];
-        xn0 = word[(64'h52f)+:(19)];
+        used$0 = word[(64'h313)+:(1)];
+        used$1 = word[(64'h314)+:(1)];
+        used$2 = word[(64'h315)+:(1)];
+        step$0 = word[(64'h316)+:(1)];
+        step$1 = word[(64'h317)+:(1)];
+        step$2 = word[(64'h318)+:(1)];
+        toff$0 = word[(64'h319)+:(19)];
+        toff$1 = word[(64'h32c)+:(19)];
+        toff$2 = word[(64'h33f)+:(19)];
+        xf$0 = word[(64'h352)+:(19)];
+        xf$1 = word[(64'h365)+:(19)];
+        xf$2 = word[(64'h378)+:(19)];
+        xi$0 = word[(64'h38b)+:(19)];
+        xi$1 = word[(64'h39e)+:(19)];
+        xi$2 = word[(64'h3b1)+:(19)];
+        off_y$0 = word[(64'h3c4)+:(19)];
+        off_y$1 = word[(64'h3d7)+:(19)];
+        off_y$2 = word[(64'h3ea)+:(19)];
+        dmaj$0 = word[(64'h3fd)+:(19)];
+        dmaj$1 = word[(64'h410)+:(19)];
+        dmaj$2 = word[(64'h423)+:(19)];
+        dmaj$3 = word[(64'h436)+:(19)];
+        dbot$0 = word[(64'h449)+:(19)];
+        dbot$1 = word[(64'h45c)+:(19)];
+        dbot$2 = word[(64'h46f)+:(19)];
+        dbot$3 = word[(64'h482)+:(19)];
+        attr0$0 = word[(64'h495)+:(40)];
+        attr0$1 = word[(64'h4bd)+:(40)];
+        attr0$2 = word[(64'h4e5)+:(40)];
+        attr0$3 = word[(64'h50d)+:(40)];
+        xn0 = word[(64'h535)+:(19)];
         edy_d$0 = ((edy$0) & 34'h3ffffffff);
         edy_d$1 = ((edy$1) & 34'h3ffffffff);
         edy_d$2 = ((edy$2) & 34'h3ffffffff);
@@ -28357,10 +28453,10 @@ module raster_top$fragments$core$triangle_setup$g1(word,maj_left,start_x$0,start
 endmodule // raster_top$fragments$core$triangle_setup$g1
 
 
-module raster_top$fragments$core$triangle_setup$g2(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$fragments$core$triangle_setup$g2(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,used$0,used$1,used$2,step$0,step$1,step$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
-    input wire  [1345:0] word;
+    input wire  [1351:0] word;
     input wire  maj_left;
     input wire  [18:0] start_x$0;
     input wire  [18:0] start_x$1;
@@ -28390,6 +28486,12 @@ module raster_top$fragments$core$triangle_setup$g2(word,maj_left,start_x$0,start
     output reg  [12:0] count$0;
     output reg  [12:0] count$1;
     output reg  [12:0] count$2;
+    output reg  used$0;
+    output reg  used$1;
+    output reg  used$2;
+    output reg  step$0;
+    output reg  step$1;
+    output reg  step$2;
     output reg  [18:0] toff$0;
     output reg  [18:0] toff$1;
     output reg  [18:0] toff$2;
@@ -28449,31 +28551,37 @@ module raster_top$fragments$core$triangle_setup$g2(word,maj_left,start_x$0,start
         count$0 = word[(64'h2ec)+:(13)];
         count$1 = word[(64'h2f9)+:(13)];
         count$2 = word[(64'h306)+:(13)];
-        toff$0 = word[(64'h313)+:(19)];
-        toff$1 = word[(64'h326)+:(19)];
-        toff$2 = word[(64'h339)+:(19)];
-        xf$0 = word[(64'h34c)+:(19)];
-        xf$1 = word[(64'h35f)+:(19)];
-        xf$2 = word[(64'h372)+:(19)];
-        xi$0 = word[(64'h385)+:(19)];
-        xi$1 = word[(64'h398)+:(19)];
-        xi$2 = word[(64'h3ab)+:(19)];
-        off_y$0 = word[(64'h3be)+:(19)];
-        off_y$1 = word[(64'h3d1)+:(19)];
-        off_y$2 = word[(64'h3e4)+:(19)];
-        dmaj$0 = word[(64'h3f7)+:(19)];
-        dmaj$1 = word[(64'h40a)+:(19)];
-        dmaj$2 = word[(64'h41d)+:(19)];
-        dmaj$3 = word[(64'h430)+:(19)];
-        dbot$0 = word[(64'h443)+:(19)];
-        dbot$1 = word[(64'h456)+:(19)];
-        dbot$2 = word[(64'h469)+:(19)];
-        dbot$3 = word[(64'h47c)+:(19)];
-        attr0$0 = word[(64'h48f)+:(40)];
-        attr0$1 = word[(64'h4b7)+:(40)];
-        attr0$2 = word[(64'h4df)+:(40)];
-        attr0$3 = word[(64'h507)+:(40)];
-        xn0 = word[(64'h52f)+:(19)];
+        used$0 = word[(64'h313)+:(1)];
+        used$1 = word[(64'h314)+:(1)];
+        used$2 = word[(64'h315)+:(1)];
+        step$0 = word[(64'h316)+:(1)];
+        step$1 = word[(64'h317)+:(1)];
+        step$2 = word[(64'h318)+:(1)];
+        toff$0 = word[(64'h319)+:(19)];
+        toff$1 = word[(64'h32c)+:(19)];
+        toff$2 = word[(64'h33f)+:(19)];
+        xf$0 = word[(64'h352)+:(19)];
+        xf$1 = word[(64'h365)+:(19)];
+        xf$2 = word[(64'h378)+:(19)];
+        xi$0 = word[(64'h38b)+:(19)];
+        xi$1 = word[(64'h39e)+:(19)];
+        xi$2 = word[(64'h3b1)+:(19)];
+        off_y$0 = word[(64'h3c4)+:(19)];
+        off_y$1 = word[(64'h3d7)+:(19)];
+        off_y$2 = word[(64'h3ea)+:(19)];
+        dmaj$0 = word[(64'h3fd)+:(19)];
+        dmaj$1 = word[(64'h410)+:(19)];
+        dmaj$2 = word[(64'h423)+:(19)];
+        dmaj$3 = word[(64'h436)+:(19)];
+        dbot$0 = word[(64'h449)+:(19)];
+        dbot$1 = word[(64'h45c)+:(19)];
+        dbot$2 = word[(64'h46f)+:(19)];
+        dbot$3 = word[(64'h482)+:(19)];
+        attr0$0 = word[(64'h495)+:(40)];
+        attr0$1 = word[(64'h4bd)+:(40)];
+        attr0$2 = word[(64'h4e5)+:(40)];
+        attr0$3 = word[(64'h50d)+:(40)];
+        xn0 = word[(64'h535)+:(19)];
         edy_d$0 = ((edy$0) & 34'h3ffffffff);
         edy_d$1 = ((edy$1) & 34'h3ffffffff);
         edy_d$2 = ((edy$2) & 34'h3ffffffff);
@@ -28500,10 +28608,10 @@ module raster_top$fragments$core$triangle_setup$g2(word,maj_left,start_x$0,start
 endmodule // raster_top$fragments$core$triangle_setup$g2
 
 
-module raster_top$fragments$core$triangle_setup$g3(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$fragments$core$triangle_setup$g3(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,used$0,used$1,used$2,step$0,step$1,step$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
-    input wire  [1345:0] word;
+    input wire  [1351:0] word;
     input wire  maj_left;
     input wire  [18:0] start_x$0;
     input wire  [18:0] start_x$1;
@@ -28533,6 +28641,12 @@ module raster_top$fragments$core$triangle_setup$g3(word,maj_left,start_x$0,start
     output reg  [12:0] count$0;
     output reg  [12:0] count$1;
     output reg  [12:0] count$2;
+    output reg  used$0;
+    output reg  used$1;
+    output reg  used$2;
+    output reg  step$0;
+    output reg  step$1;
+    output reg  step$2;
     output reg  [18:0] toff$0;
     output reg  [18:0] toff$1;
     output reg  [18:0] toff$2;
@@ -28592,31 +28706,37 @@ module raster_top$fragments$core$triangle_setup$g3(word,maj_left,start_x$0,start
         count$0 = word[(64'h2ec)+:(13)];
         count$1 = word[(64'h2f9)+:(13)];
         count$2 = word[(64'h306)+:(13)];
-        toff$0 = word[(64'h313)+:(19)];
-        toff$1 = word[(64'h326)+:(19)];
-        toff$2 = word[(64'h339)+:(19)];
-        xf$0 = word[(64'h34c)+:(19)];
-        xf$1 = word[(64'h35f)+:(19)];
-        xf$2 = word[(64'h372)+:(19)];
-        xi$0 = word[(64'h385)+:(19)];
-        xi$1 = word[(64'h398)+:(19)];
-        xi$2 = word[(64'h3ab)+:(19)];
-        off_y$0 = word[(64'h3be)+:(19)];
-        off_y$1 = word[(64'h3d1)+:(19)];
-        off_y$2 = word[(64'h3e4)+:(19)];
-        dmaj$0 = word[(64'h3f7)+:(19)];
-        dmaj$1 = word[(64'h40a)+:(19)];
-        dmaj$2 = word[(64'h41d)+:(19)];
-        dmaj$3 = word[(64'h430)+:(19)];
-        dbot$0 = word[(64'h443)+:(19)];
-        dbot$1 = word[(64'h456)+:(19)];
-        dbot$2 = word[(64'h469)+:(19)];
-        dbot$3 = word[(64'h47c)+:(19)];
-        attr0$0 = word[(64'h48f)+:(40)];
-        attr0$1 = word[(64'h4b7)+:(40)];
-        attr0$2 = word[(64'h4df)+:(40)];
-        attr0$3 = word[(64'h507)+:(40)];
-        xn0 = word[(64'h52f)+:(19)];
+        used$0 = word[(64'h313)+:(1)];
+        used$1 = word[(64'h314)+:(1)];
+        used$2 = word[(64'h315)+:(1)];
+        step$0 = word[(64'h316)+:(1)];
+        step$1 = word[(64'h317)+:(1)];
+        step$2 = word[(64'h318)+:(1)];
+        toff$0 = word[(64'h319)+:(19)];
+        toff$1 = word[(64'h32c)+:(19)];
+        toff$2 = word[(64'h33f)+:(19)];
+        xf$0 = word[(64'h352)+:(19)];
+        xf$1 = word[(64'h365)+:(19)];
+        xf$2 = word[(64'h378)+:(19)];
+        xi$0 = word[(64'h38b)+:(19)];
+        xi$1 = word[(64'h39e)+:(19)];
+        xi$2 = word[(64'h3b1)+:(19)];
+        off_y$0 = word[(64'h3c4)+:(19)];
+        off_y$1 = word[(64'h3d7)+:(19)];
+        off_y$2 = word[(64'h3ea)+:(19)];
+        dmaj$0 = word[(64'h3fd)+:(19)];
+        dmaj$1 = word[(64'h410)+:(19)];
+        dmaj$2 = word[(64'h423)+:(19)];
+        dmaj$3 = word[(64'h436)+:(19)];
+        dbot$0 = word[(64'h449)+:(19)];
+        dbot$1 = word[(64'h45c)+:(19)];
+        dbot$2 = word[(64'h46f)+:(19)];
+        dbot$3 = word[(64'h482)+:(19)];
+        attr0$0 = word[(64'h495)+:(40)];
+        attr0$1 = word[(64'h4bd)+:(40)];
+        attr0$2 = word[(64'h4e5)+:(40)];
+        attr0$3 = word[(64'h50d)+:(40)];
+        xn0 = word[(64'h535)+:(19)];
         edy_d$0 = ((edy$0) & 34'h3ffffffff);
         edy_d$1 = ((edy$1) & 34'h3ffffffff);
         edy_d$2 = ((edy$2) & 34'h3ffffffff);
@@ -28643,10 +28763,10 @@ module raster_top$fragments$core$triangle_setup$g3(word,maj_left,start_x$0,start
 endmodule // raster_top$fragments$core$triangle_setup$g3
 
 
-module raster_top$fragments$core$triangle_setup$g4(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$fragments$core$triangle_setup$g4(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,used$0,used$1,used$2,step$0,step$1,step$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
-    input wire  [1345:0] word;
+    input wire  [1351:0] word;
     input wire  maj_left;
     input wire  [18:0] start_x$0;
     input wire  [18:0] start_x$1;
@@ -28676,6 +28796,12 @@ module raster_top$fragments$core$triangle_setup$g4(word,maj_left,start_x$0,start
     output reg  [12:0] count$0;
     output reg  [12:0] count$1;
     output reg  [12:0] count$2;
+    output reg  used$0;
+    output reg  used$1;
+    output reg  used$2;
+    output reg  step$0;
+    output reg  step$1;
+    output reg  step$2;
     output reg  [18:0] toff$0;
     output reg  [18:0] toff$1;
     output reg  [18:0] toff$2;
@@ -28735,31 +28861,37 @@ module raster_top$fragments$core$triangle_setup$g4(word,maj_left,start_x$0,start
         count$0 = word[(64'h2ec)+:(13)];
         count$1 = word[(64'h2f9)+:(13)];
         count$2 = word[(64'h306)+:(13)];
-        toff$0 = word[(64'h313)+:(19)];
-        toff$1 = word[(64'h326)+:(19)];
-        toff$2 = word[(64'h339)+:(19)];
-        xf$0 = word[(64'h34c)+:(19)];
-        xf$1 = word[(64'h35f)+:(19)];
-        xf$2 = word[(64'h372)+:(19)];
-        xi$0 = word[(64'h385)+:(19)];
-        xi$1 = word[(64'h398)+:(19)];
-        xi$2 = word[(64'h3ab)+:(19)];
-        off_y$0 = word[(64'h3be)+:(19)];
-        off_y$1 = word[(64'h3d1)+:(19)];
-        off_y$2 = word[(64'h3e4)+:(19)];
-        dmaj$0 = word[(64'h3f7)+:(19)];
-        dmaj$1 = word[(64'h40a)+:(19)];
-        dmaj$2 = word[(64'h41d)+:(19)];
-        dmaj$3 = word[(64'h430)+:(19)];
-        dbot$0 = word[(64'h443)+:(19)];
-        dbot$1 = word[(64'h456)+:(19)];
-        dbot$2 = word[(64'h469)+:(19)];
-        dbot$3 = word[(64'h47c)+:(19)];
-        attr0$0 = word[(64'h48f)+:(40)];
-        attr0$1 = word[(64'h4b7)+:(40)];
-        attr0$2 = word[(64'h4df)+:(40)];
-        attr0$3 = word[(64'h507)+:(40)];
-        xn0 = word[(64'h52f)+:(19)];
+        used$0 = word[(64'h313)+:(1)];
+        used$1 = word[(64'h314)+:(1)];
+        used$2 = word[(64'h315)+:(1)];
+        step$0 = word[(64'h316)+:(1)];
+        step$1 = word[(64'h317)+:(1)];
+        step$2 = word[(64'h318)+:(1)];
+        toff$0 = word[(64'h319)+:(19)];
+        toff$1 = word[(64'h32c)+:(19)];
+        toff$2 = word[(64'h33f)+:(19)];
+        xf$0 = word[(64'h352)+:(19)];
+        xf$1 = word[(64'h365)+:(19)];
+        xf$2 = word[(64'h378)+:(19)];
+        xi$0 = word[(64'h38b)+:(19)];
+        xi$1 = word[(64'h39e)+:(19)];
+        xi$2 = word[(64'h3b1)+:(19)];
+        off_y$0 = word[(64'h3c4)+:(19)];
+        off_y$1 = word[(64'h3d7)+:(19)];
+        off_y$2 = word[(64'h3ea)+:(19)];
+        dmaj$0 = word[(64'h3fd)+:(19)];
+        dmaj$1 = word[(64'h410)+:(19)];
+        dmaj$2 = word[(64'h423)+:(19)];
+        dmaj$3 = word[(64'h436)+:(19)];
+        dbot$0 = word[(64'h449)+:(19)];
+        dbot$1 = word[(64'h45c)+:(19)];
+        dbot$2 = word[(64'h46f)+:(19)];
+        dbot$3 = word[(64'h482)+:(19)];
+        attr0$0 = word[(64'h495)+:(40)];
+        attr0$1 = word[(64'h4bd)+:(40)];
+        attr0$2 = word[(64'h4e5)+:(40)];
+        attr0$3 = word[(64'h50d)+:(40)];
+        xn0 = word[(64'h535)+:(19)];
         edy_d$0 = ((edy$0) & 34'h3ffffffff);
         edy_d$1 = ((edy$1) & 34'h3ffffffff);
         edy_d$2 = ((edy$2) & 34'h3ffffffff);
@@ -28786,10 +28918,10 @@ module raster_top$fragments$core$triangle_setup$g4(word,maj_left,start_x$0,start
 endmodule // raster_top$fragments$core$triangle_setup$g4
 
 
-module raster_top$fragments$core$triangle_setup$g5(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$fragments$core$triangle_setup$g5(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,used$0,used$1,used$2,step$0,step$1,step$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
-    input wire  [1345:0] word;
+    input wire  [1351:0] word;
     input wire  maj_left;
     input wire  [18:0] start_x$0;
     input wire  [18:0] start_x$1;
@@ -28819,6 +28951,12 @@ module raster_top$fragments$core$triangle_setup$g5(word,maj_left,start_x$0,start
     output reg  [12:0] count$0;
     output reg  [12:0] count$1;
     output reg  [12:0] count$2;
+    output reg  used$0;
+    output reg  used$1;
+    output reg  used$2;
+    output reg  step$0;
+    output reg  step$1;
+    output reg  step$2;
     output reg  [18:0] toff$0;
     output reg  [18:0] toff$1;
     output reg  [18:0] toff$2;
@@ -28878,31 +29016,37 @@ module raster_top$fragments$core$triangle_setup$g5(word,maj_left,start_x$0,start
         count$0 = word[(64'h2ec)+:(13)];
         count$1 = word[(64'h2f9)+:(13)];
         count$2 = word[(64'h306)+:(13)];
-        toff$0 = word[(64'h313)+:(19)];
-        toff$1 = word[(64'h326)+:(19)];
-        toff$2 = word[(64'h339)+:(19)];
-        xf$0 = word[(64'h34c)+:(19)];
-        xf$1 = word[(64'h35f)+:(19)];
-        xf$2 = word[(64'h372)+:(19)];
-        xi$0 = word[(64'h385)+:(19)];
-        xi$1 = word[(64'h398)+:(19)];
-        xi$2 = word[(64'h3ab)+:(19)];
-        off_y$0 = word[(64'h3be)+:(19)];
-        off_y$1 = word[(64'h3d1)+:(19)];
-        off_y$2 = word[(64'h3e4)+:(19)];
-        dmaj$0 = word[(64'h3f7)+:(19)];
-        dmaj$1 = word[(64'h40a)+:(19)];
-        dmaj$2 = word[(64'h41d)+:(19)];
-        dmaj$3 = word[(64'h430)+:(19)];
-        dbot$0 = word[(64'h443)+:(19)];
-        dbot$1 = word[(64'h456)+:(19)];
-        dbot$2 = word[(64'h469)+:(19)];
-        dbot$3 = word[(64'h47c)+:(19)];
-        attr0$0 = word[(64'h48f)+:(40)];
-        attr0$1 = word[(64'h4b7)+:(40)];
-        attr0$2 = word[(64'h4df)+:(40)];
-        attr0$3 = word[(64'h507)+:(40)];
-        xn0 = word[(64'h52f)+:(19)];
+        used$0 = word[(64'h313)+:(1)];
+        used$1 = word[(64'h314)+:(1)];
+        used$2 = word[(64'h315)+:(1)];
+        step$0 = word[(64'h316)+:(1)];
+        step$1 = word[(64'h317)+:(1)];
+        step$2 = word[(64'h318)+:(1)];
+        toff$0 = word[(64'h319)+:(19)];
+        toff$1 = word[(64'h32c)+:(19)];
+        toff$2 = word[(64'h33f)+:(19)];
+        xf$0 = word[(64'h352)+:(19)];
+        xf$1 = word[(64'h365)+:(19)];
+        xf$2 = word[(64'h378)+:(19)];
+        xi$0 = word[(64'h38b)+:(19)];
+        xi$1 = word[(64'h39e)+:(19)];
+        xi$2 = word[(64'h3b1)+:(19)];
+        off_y$0 = word[(64'h3c4)+:(19)];
+        off_y$1 = word[(64'h3d7)+:(19)];
+        off_y$2 = word[(64'h3ea)+:(19)];
+        dmaj$0 = word[(64'h3fd)+:(19)];
+        dmaj$1 = word[(64'h410)+:(19)];
+        dmaj$2 = word[(64'h423)+:(19)];
+        dmaj$3 = word[(64'h436)+:(19)];
+        dbot$0 = word[(64'h449)+:(19)];
+        dbot$1 = word[(64'h45c)+:(19)];
+        dbot$2 = word[(64'h46f)+:(19)];
+        dbot$3 = word[(64'h482)+:(19)];
+        attr0$0 = word[(64'h495)+:(40)];
+        attr0$1 = word[(64'h4bd)+:(40)];
+        attr0$2 = word[(64'h4e5)+:(40)];
+        attr0$3 = word[(64'h50d)+:(40)];
+        xn0 = word[(64'h535)+:(19)];
         edy_d$0 = ((edy$0) & 34'h3ffffffff);
         edy_d$1 = ((edy$1) & 34'h3ffffffff);
         edy_d$2 = ((edy$2) & 34'h3ffffffff);
@@ -28951,13 +29095,13 @@ endmodule // raster_top$fragments$core$triangle_setup$gate_r
 module raster_top$fragments$core$triangle_setup$geo$0(d,q,clock);
     
     // Module arguments
-    input wire  [1345:0] d;
-    output reg  [1345:0] q;
+    input wire  [1351:0] d;
+    output reg  [1351:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1346'h0;
+       q = 1352'h0;
     end
     
     always @(posedge clock) begin
@@ -28970,13 +29114,13 @@ endmodule // raster_top$fragments$core$triangle_setup$geo$0
 module raster_top$fragments$core$triangle_setup$geo$1(d,q,clock);
     
     // Module arguments
-    input wire  [1345:0] d;
-    output reg  [1345:0] q;
+    input wire  [1351:0] d;
+    output reg  [1351:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1346'h0;
+       q = 1352'h0;
     end
     
     always @(posedge clock) begin
@@ -28989,13 +29133,13 @@ endmodule // raster_top$fragments$core$triangle_setup$geo$1
 module raster_top$fragments$core$triangle_setup$geo$2(d,q,clock);
     
     // Module arguments
-    input wire  [1345:0] d;
-    output reg  [1345:0] q;
+    input wire  [1351:0] d;
+    output reg  [1351:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1346'h0;
+       q = 1352'h0;
     end
     
     always @(posedge clock) begin
@@ -29008,13 +29152,13 @@ endmodule // raster_top$fragments$core$triangle_setup$geo$2
 module raster_top$fragments$core$triangle_setup$geo$3(d,q,clock);
     
     // Module arguments
-    input wire  [1345:0] d;
-    output reg  [1345:0] q;
+    input wire  [1351:0] d;
+    output reg  [1351:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1346'h0;
+       q = 1352'h0;
     end
     
     always @(posedge clock) begin
@@ -29027,13 +29171,13 @@ endmodule // raster_top$fragments$core$triangle_setup$geo$3
 module raster_top$fragments$core$triangle_setup$geo$4(d,q,clock);
     
     // Module arguments
-    input wire  [1345:0] d;
-    output reg  [1345:0] q;
+    input wire  [1351:0] d;
+    output reg  [1351:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1346'h0;
+       q = 1352'h0;
     end
     
     always @(posedge clock) begin
@@ -29046,13 +29190,13 @@ endmodule // raster_top$fragments$core$triangle_setup$geo$4
 module raster_top$fragments$core$triangle_setup$geo$5(d,q,clock);
     
     // Module arguments
-    input wire  [1345:0] d;
-    output reg  [1345:0] q;
+    input wire  [1351:0] d;
+    output reg  [1351:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1346'h0;
+       q = 1352'h0;
     end
     
     always @(posedge clock) begin
@@ -29084,7 +29228,7 @@ module raster_top$fragments$core$triangle_setup$geometry(vx$0,vx$1,vx$2,vy$0,vy$
     input wire  [7:0] vc$7;
     input wire  [7:0] vc$8;
     input wire  [5:0] crosses;
-    output reg  [1345:0] word;
+    output reg  [1351:0] word;
     
     // Constant declarations
     localparam  frac = 8'h4;
@@ -29355,31 +29499,37 @@ module raster_top$fragments$core$triangle_setup$geometry(vx$0,vx$1,vx$2,vy$0,vy$
         word[(64'h2ec)+:(13)] = count$0;
         word[(64'h2f9)+:(13)] = count$1;
         word[(64'h306)+:(13)] = count$2;
-        word[(64'h313)+:(19)] = toff$0;
-        word[(64'h326)+:(19)] = toff$1;
-        word[(64'h339)+:(19)] = toff$2;
-        word[(64'h34c)+:(19)] = xf$0;
-        word[(64'h35f)+:(19)] = xf$1;
-        word[(64'h372)+:(19)] = xf$2;
-        word[(64'h385)+:(19)] = xi$0;
-        word[(64'h398)+:(19)] = xi$1;
-        word[(64'h3ab)+:(19)] = xi$2;
-        word[(64'h3be)+:(19)] = off_y$0;
-        word[(64'h3d1)+:(19)] = off_y$1;
-        word[(64'h3e4)+:(19)] = off_y$2;
-        word[(64'h3f7)+:(19)] = dmaj$0;
-        word[(64'h40a)+:(19)] = dmaj$1;
-        word[(64'h41d)+:(19)] = dmaj$2;
-        word[(64'h430)+:(19)] = dmaj$3;
-        word[(64'h443)+:(19)] = dbot$0;
-        word[(64'h456)+:(19)] = dbot$1;
-        word[(64'h469)+:(19)] = dbot$2;
-        word[(64'h47c)+:(19)] = dbot$3;
-        word[(64'h48f)+:(40)] = attr0$0;
-        word[(64'h4b7)+:(40)] = attr0$1;
-        word[(64'h4df)+:(40)] = attr0$2;
-        word[(64'h507)+:(40)] = attr0$3;
-        word[(64'h52f)+:(19)] = xn$0;
+        word[(64'h313)+:(1)] = count$0 != 32'h0;
+        word[(64'h314)+:(1)] = count$1 != 32'h0;
+        word[(64'h315)+:(1)] = count$2 != 32'h0;
+        word[(64'h316)+:(1)] = count$0 > 32'h1;
+        word[(64'h317)+:(1)] = count$1 > 32'h1;
+        word[(64'h318)+:(1)] = count$2 > 32'h1;
+        word[(64'h319)+:(19)] = toff$0;
+        word[(64'h32c)+:(19)] = toff$1;
+        word[(64'h33f)+:(19)] = toff$2;
+        word[(64'h352)+:(19)] = xf$0;
+        word[(64'h365)+:(19)] = xf$1;
+        word[(64'h378)+:(19)] = xf$2;
+        word[(64'h38b)+:(19)] = xi$0;
+        word[(64'h39e)+:(19)] = xi$1;
+        word[(64'h3b1)+:(19)] = xi$2;
+        word[(64'h3c4)+:(19)] = off_y$0;
+        word[(64'h3d7)+:(19)] = off_y$1;
+        word[(64'h3ea)+:(19)] = off_y$2;
+        word[(64'h3fd)+:(19)] = dmaj$0;
+        word[(64'h410)+:(19)] = dmaj$1;
+        word[(64'h423)+:(19)] = dmaj$2;
+        word[(64'h436)+:(19)] = dmaj$3;
+        word[(64'h449)+:(19)] = dbot$0;
+        word[(64'h45c)+:(19)] = dbot$1;
+        word[(64'h46f)+:(19)] = dbot$2;
+        word[(64'h482)+:(19)] = dbot$3;
+        word[(64'h495)+:(40)] = attr0$0;
+        word[(64'h4bd)+:(40)] = attr0$1;
+        word[(64'h4e5)+:(40)] = attr0$2;
+        word[(64'h50d)+:(40)] = attr0$3;
+        word[(64'h535)+:(19)] = xn$0;
     end
     
 endmodule // raster_top$fragments$core$triangle_setup$geometry

@@ -10822,24 +10822,24 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [7:0] geometry$vc$7;
     reg  [7:0] geometry$vc$8;
     reg  [5:0] geometry$crosses;
-    wire  [1345:0] geometry$word;
-    reg  [1345:0] geo$0$d;
-    wire  [1345:0] geo$0$q;
+    wire  [1351:0] geometry$word;
+    reg  [1351:0] geo$0$d;
+    wire  [1351:0] geo$0$q;
     reg  geo$0$clock;
-    reg  [1345:0] geo$1$d;
-    wire  [1345:0] geo$1$q;
+    reg  [1351:0] geo$1$d;
+    wire  [1351:0] geo$1$q;
     reg  geo$1$clock;
-    reg  [1345:0] geo$2$d;
-    wire  [1345:0] geo$2$q;
+    reg  [1351:0] geo$2$d;
+    wire  [1351:0] geo$2$q;
     reg  geo$2$clock;
-    reg  [1345:0] geo$3$d;
-    wire  [1345:0] geo$3$q;
+    reg  [1351:0] geo$3$d;
+    wire  [1351:0] geo$3$q;
     reg  geo$3$clock;
-    reg  [1345:0] geo$4$d;
-    wire  [1345:0] geo$4$q;
+    reg  [1351:0] geo$4$d;
+    wire  [1351:0] geo$4$q;
     reg  geo$4$clock;
-    reg  [1345:0] geo$5$d;
-    wire  [1345:0] geo$5$q;
+    reg  [1351:0] geo$5$d;
+    wire  [1351:0] geo$5$q;
     reg  geo$5$clock;
     reg  sign$0$d;
     wire  sign$0$q;
@@ -11111,7 +11111,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     reg  [20:0] rho$17$d;
     wire  [20:0] rho$17$q;
     reg  rho$17$clock;
-    reg  [1345:0] g0$word;
+    reg  [1351:0] g0$word;
     reg  g0$maj_left;
     reg  [18:0] g0$start_x$0;
     reg  [18:0] g0$start_x$1;
@@ -11141,6 +11141,12 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     wire  [12:0] g0$count$0;
     wire  [12:0] g0$count$1;
     wire  [12:0] g0$count$2;
+    wire  g0$used$0;
+    wire  g0$used$1;
+    wire  g0$used$2;
+    wire  g0$step$0;
+    wire  g0$step$1;
+    wire  g0$step$2;
     wire  [18:0] g0$toff$0;
     wire  [18:0] g0$toff$1;
     wire  [18:0] g0$toff$2;
@@ -11168,7 +11174,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     wire  [39:0] g0$attr0$1;
     wire  [39:0] g0$attr0$2;
     wire  [39:0] g0$attr0$3;
-    reg  [1345:0] g1$word;
+    reg  [1351:0] g1$word;
     reg  g1$maj_left;
     reg  [18:0] g1$start_x$0;
     reg  [18:0] g1$start_x$1;
@@ -11198,6 +11204,12 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     wire  [12:0] g1$count$0;
     wire  [12:0] g1$count$1;
     wire  [12:0] g1$count$2;
+    wire  g1$used$0;
+    wire  g1$used$1;
+    wire  g1$used$2;
+    wire  g1$step$0;
+    wire  g1$step$1;
+    wire  g1$step$2;
     wire  [18:0] g1$toff$0;
     wire  [18:0] g1$toff$1;
     wire  [18:0] g1$toff$2;
@@ -11225,7 +11237,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     wire  [39:0] g1$attr0$1;
     wire  [39:0] g1$attr0$2;
     wire  [39:0] g1$attr0$3;
-    reg  [1345:0] g2$word;
+    reg  [1351:0] g2$word;
     reg  g2$maj_left;
     reg  [18:0] g2$start_x$0;
     reg  [18:0] g2$start_x$1;
@@ -11255,6 +11267,12 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     wire  [12:0] g2$count$0;
     wire  [12:0] g2$count$1;
     wire  [12:0] g2$count$2;
+    wire  g2$used$0;
+    wire  g2$used$1;
+    wire  g2$used$2;
+    wire  g2$step$0;
+    wire  g2$step$1;
+    wire  g2$step$2;
     wire  [18:0] g2$toff$0;
     wire  [18:0] g2$toff$1;
     wire  [18:0] g2$toff$2;
@@ -11282,7 +11300,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     wire  [39:0] g2$attr0$1;
     wire  [39:0] g2$attr0$2;
     wire  [39:0] g2$attr0$3;
-    reg  [1345:0] g3$word;
+    reg  [1351:0] g3$word;
     reg  g3$maj_left;
     reg  [18:0] g3$start_x$0;
     reg  [18:0] g3$start_x$1;
@@ -11312,6 +11330,12 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     wire  [12:0] g3$count$0;
     wire  [12:0] g3$count$1;
     wire  [12:0] g3$count$2;
+    wire  g3$used$0;
+    wire  g3$used$1;
+    wire  g3$used$2;
+    wire  g3$step$0;
+    wire  g3$step$1;
+    wire  g3$step$2;
     wire  [18:0] g3$toff$0;
     wire  [18:0] g3$toff$1;
     wire  [18:0] g3$toff$2;
@@ -11339,7 +11363,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     wire  [39:0] g3$attr0$1;
     wire  [39:0] g3$attr0$2;
     wire  [39:0] g3$attr0$3;
-    reg  [1345:0] g4$word;
+    reg  [1351:0] g4$word;
     reg  g4$maj_left;
     reg  [18:0] g4$start_x$0;
     reg  [18:0] g4$start_x$1;
@@ -11369,6 +11393,12 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     wire  [12:0] g4$count$0;
     wire  [12:0] g4$count$1;
     wire  [12:0] g4$count$2;
+    wire  g4$used$0;
+    wire  g4$used$1;
+    wire  g4$used$2;
+    wire  g4$step$0;
+    wire  g4$step$1;
+    wire  g4$step$2;
     wire  [18:0] g4$toff$0;
     wire  [18:0] g4$toff$1;
     wire  [18:0] g4$toff$2;
@@ -11396,7 +11426,7 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     wire  [39:0] g4$attr0$1;
     wire  [39:0] g4$attr0$2;
     wire  [39:0] g4$attr0$3;
-    reg  [1345:0] g5$word;
+    reg  [1351:0] g5$word;
     reg  g5$maj_left;
     reg  [18:0] g5$start_x$0;
     reg  [18:0] g5$start_x$1;
@@ -11426,6 +11456,12 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
     wire  [12:0] g5$count$0;
     wire  [12:0] g5$count$1;
     wire  [12:0] g5$count$2;
+    wire  g5$used$0;
+    wire  g5$used$1;
+    wire  g5$used$2;
+    wire  g5$step$0;
+    wire  g5$step$1;
+    wire  g5$step$2;
     wire  [18:0] g5$toff$0;
     wire  [18:0] g5$toff$1;
     wire  [18:0] g5$toff$2;
@@ -12749,6 +12785,12 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .count$0(g0$count$0),
         .count$1(g0$count$1),
         .count$2(g0$count$2),
+        .used$0(g0$used$0),
+        .used$1(g0$used$1),
+        .used$2(g0$used$2),
+        .step$0(g0$step$0),
+        .step$1(g0$step$1),
+        .step$2(g0$step$2),
         .toff$0(g0$toff$0),
         .toff$1(g0$toff$1),
         .toff$2(g0$toff$2),
@@ -12808,6 +12850,12 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .count$0(g1$count$0),
         .count$1(g1$count$1),
         .count$2(g1$count$2),
+        .used$0(g1$used$0),
+        .used$1(g1$used$1),
+        .used$2(g1$used$2),
+        .step$0(g1$step$0),
+        .step$1(g1$step$1),
+        .step$2(g1$step$2),
         .toff$0(g1$toff$0),
         .toff$1(g1$toff$1),
         .toff$2(g1$toff$2),
@@ -12867,6 +12915,12 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .count$0(g2$count$0),
         .count$1(g2$count$1),
         .count$2(g2$count$2),
+        .used$0(g2$used$0),
+        .used$1(g2$used$1),
+        .used$2(g2$used$2),
+        .step$0(g2$step$0),
+        .step$1(g2$step$1),
+        .step$2(g2$step$2),
         .toff$0(g2$toff$0),
         .toff$1(g2$toff$1),
         .toff$2(g2$toff$2),
@@ -12926,6 +12980,12 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .count$0(g3$count$0),
         .count$1(g3$count$1),
         .count$2(g3$count$2),
+        .used$0(g3$used$0),
+        .used$1(g3$used$1),
+        .used$2(g3$used$2),
+        .step$0(g3$step$0),
+        .step$1(g3$step$1),
+        .step$2(g3$step$2),
         .toff$0(g3$toff$0),
         .toff$1(g3$toff$1),
         .toff$2(g3$toff$2),
@@ -12985,6 +13045,12 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .count$0(g4$count$0),
         .count$1(g4$count$1),
         .count$2(g4$count$2),
+        .used$0(g4$used$0),
+        .used$1(g4$used$1),
+        .used$2(g4$used$2),
+        .step$0(g4$step$0),
+        .step$1(g4$step$1),
+        .step$2(g4$step$2),
         .toff$0(g4$toff$0),
         .toff$1(g4$toff$1),
         .toff$2(g4$toff$2),
@@ -13044,6 +13110,12 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         .count$0(g5$count$0),
         .count$1(g5$count$1),
         .count$2(g5$count$2),
+        .used$0(g5$used$0),
+        .used$1(g5$used$1),
+        .used$2(g5$used$2),
+        .step$0(g5$step$0),
+        .step$1(g5$step$1),
+        .step$2(g5$step$2),
         .toff$0(g5$toff$0),
         .toff$1(g5$toff$1),
         .toff$2(g5$toff$2),
@@ -16893,42 +16965,42 @@ module raster_top$core$triangle_setup(clock,inp$valid,inp$ready,inp$v0_x,inp$v0_
         end
         if (at_iss$1) begin
             div_v$d = 1'b1;
-            if (g0$count$0 != 32'h0) begin
+            if (g0$used$0) begin
                 div_n$d = num$0$q[(32'h0)+:(58)];
                 div_d$d = g0$ed16$0;
             end
         end
         if (at_iss$2) begin
             div_v$d = 1'b1;
-            if (g0$count$0 > 32'h1) begin
+            if (g0$step$0) begin
                 div_n$d = g0$edx$0[(32'h0)+:(58)];
                 div_d$d = g0$edy_d$0;
             end
         end
         if (at_iss$3) begin
             div_v$d = 1'b1;
-            if (g0$count$1 != 32'h0) begin
+            if (g0$used$1) begin
                 div_n$d = num$1$q[(32'h0)+:(58)];
                 div_d$d = g0$ed16$1;
             end
         end
         if (at_iss$4) begin
             div_v$d = 1'b1;
-            if (g0$count$1 > 32'h1) begin
+            if (g0$step$1) begin
                 div_n$d = g0$edx$1[(32'h0)+:(58)];
                 div_d$d = g0$edy_d$1;
             end
         end
         if (at_iss$5) begin
             div_v$d = 1'b1;
-            if (g0$count$2 != 32'h0) begin
+            if (g0$used$2) begin
                 div_n$d = num$2$q[(32'h0)+:(58)];
                 div_d$d = g0$ed16$2;
             end
         end
         if (at_iss$6) begin
             div_v$d = 1'b1;
-            if (g0$count$2 > 32'h1) begin
+            if (g0$step$2) begin
                 div_n$d = g0$edx$2[(32'h0)+:(58)];
                 div_d$d = g0$edy_d$2;
             end
@@ -28568,10 +28640,10 @@ module raster_top$core$triangle_setup$exp$5(d,q,clock);
 endmodule // raster_top$core$triangle_setup$exp$5
 
 
-module raster_top$core$triangle_setup$g0(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$core$triangle_setup$g0(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,used$0,used$1,used$2,step$0,step$1,step$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
-    input wire  [1345:0] word;
+    input wire  [1351:0] word;
     input wire  maj_left;
     input wire  [18:0] start_x$0;
     input wire  [18:0] start_x$1;
@@ -28601,6 +28673,12 @@ module raster_top$core$triangle_setup$g0(word,maj_left,start_x$0,start_x$1,start
     output reg  [12:0] count$0;
     output reg  [12:0] count$1;
     output reg  [12:0] count$2;
+    output reg  used$0;
+    output reg  used$1;
+    output reg  used$2;
+    output reg  step$0;
+    output reg  step$1;
+    output reg  step$2;
     output reg  [18:0] toff$0;
     output reg  [18:0] toff$1;
     output reg  [18:0] toff$2;
@@ -28660,31 +28738,37 @@ module raster_top$core$triangle_setup$g0(word,maj_left,start_x$0,start_x$1,start
         count$0 = word[(64'h2ec)+:(13)];
         count$1 = word[(64'h2f9)+:(13)];
         count$2 = word[(64'h306)+:(13)];
-        toff$0 = word[(64'h313)+:(19)];
-        toff$1 = word[(64'h326)+:(19)];
-        toff$2 = word[(64'h339)+:(19)];
-        xf$0 = word[(64'h34c)+:(19)];
-        xf$1 = word[(64'h35f)+:(19)];
-        xf$2 = word[(64'h372)+:(19)];
-        xi$0 = word[(64'h385)+:(19)];
-        xi$1 = word[(64'h398)+:(19)];
-        xi$2 = word[(64'h3ab)+:(19)];
-        off_y$0 = word[(64'h3be)+:(19)];
-        off_y$1 = word[(64'h3d1)+:(19)];
-        off_y$2 = word[(64'h3e4)+:(19)];
-        dmaj$0 = word[(64'h3f7)+:(19)];
-        dmaj$1 = word[(64'h40a)+:(19)];
-        dmaj$2 = word[(64'h41d)+:(19)];
-        dmaj$3 = word[(64'h430)+:(19)];
-        dbot$0 = word[(64'h443)+:(19)];
-        dbot$1 = word[(64'h456)+:(19)];
-        dbot$2 = word[(64'h469)+:(19)];
-        dbot$3 = word[(64'h47c)+:(19)];
-        attr0$0 = word[(64'h48f)+:(40)];
-        attr0$1 = word[(64'h4b7)+:(40)];
-        attr0$2 = word[(64'h4df)+:(40)];
-        attr0$3 = word[(64'h507)+:(40)];
-        xn0 = word[(64'h52f)+:(19)];
+        used$0 = word[(64'h313)+:(1)];
+        used$1 = word[(64'h314)+:(1)];
+        used$2 = word[(64'h315)+:(1)];
+        step$0 = word[(64'h316)+:(1)];
+        step$1 = word[(64'h317)+:(1)];
+        step$2 = word[(64'h318)+:(1)];
+        toff$0 = word[(64'h319)+:(19)];
+        toff$1 = word[(64'h32c)+:(19)];
+        toff$2 = word[(64'h33f)+:(19)];
+        xf$0 = word[(64'h352)+:(19)];
+        xf$1 = word[(64'h365)+:(19)];
+        xf$2 = word[(64'h378)+:(19)];
+        xi$0 = word[(64'h38b)+:(19)];
+        xi$1 = word[(64'h39e)+:(19)];
+        xi$2 = word[(64'h3b1)+:(19)];
+        off_y$0 = word[(64'h3c4)+:(19)];
+        off_y$1 = word[(64'h3d7)+:(19)];
+        off_y$2 = word[(64'h3ea)+:(19)];
+        dmaj$0 = word[(64'h3fd)+:(19)];
+        dmaj$1 = word[(64'h410)+:(19)];
+        dmaj$2 = word[(64'h423)+:(19)];
+        dmaj$3 = word[(64'h436)+:(19)];
+        dbot$0 = word[(64'h449)+:(19)];
+        dbot$1 = word[(64'h45c)+:(19)];
+        dbot$2 = word[(64'h46f)+:(19)];
+        dbot$3 = word[(64'h482)+:(19)];
+        attr0$0 = word[(64'h495)+:(40)];
+        attr0$1 = word[(64'h4bd)+:(40)];
+        attr0$2 = word[(64'h4e5)+:(40)];
+        attr0$3 = word[(64'h50d)+:(40)];
+        xn0 = word[(64'h535)+:(19)];
         edy_d$0 = ((edy$0) & 34'h3ffffffff);
         edy_d$1 = ((edy$1) & 34'h3ffffffff);
         edy_d$2 = ((edy$2) & 34'h3ffffffff);
@@ -28711,10 +28795,10 @@ module raster_top$core$triangle_setup$g0(word,maj_left,start_x$0,start_x$1,start
 endmodule // raster_top$core$triangle_setup$g0
 
 
-module raster_top$core$triangle_setup$g1(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$core$triangle_setup$g1(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,used$0,used$1,used$2,step$0,step$1,step$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
-    input wire  [1345:0] word;
+    input wire  [1351:0] word;
     input wire  maj_left;
     input wire  [18:0] start_x$0;
     input wire  [18:0] start_x$1;
@@ -28744,6 +28828,12 @@ module raster_top$core$triangle_setup$g1(word,maj_left,start_x$0,start_x$1,start
     output reg  [12:0] count$0;
     output reg  [12:0] count$1;
     output reg  [12:0] count$2;
+    output reg  used$0;
+    output reg  used$1;
+    output reg  used$2;
+    output reg  step$0;
+    output reg  step$1;
+    output reg  step$2;
     output reg  [18:0] toff$0;
     output reg  [18:0] toff$1;
     output reg  [18:0] toff$2;
@@ -28803,31 +28893,37 @@ module raster_top$core$triangle_setup$g1(word,maj_left,start_x$0,start_x$1,start
         count$0 = word[(64'h2ec)+:(13)];
         count$1 = word[(64'h2f9)+:(13)];
         count$2 = word[(64'h306)+:(13)];
-        toff$0 = word[(64'h313)+:(19)];
-        toff$1 = word[(64'h326)+:(19)];
-        toff$2 = word[(64'h339)+:(19)];
-        xf$0 = word[(64'h34c)+:(19)];
-        xf$1 = word[(64'h35f)+:(19)];
-        xf$2 = word[(64'h372)+:(19)];
-        xi$0 = word[(64'h385)+:(19)];
-        xi$1 = word[(64'h398)+:(19)];
-        xi$2 = word[(64'h3ab)+:(19)];
-        off_y$0 = word[(64'h3be)+:(19)];
-        off_y$1 = word[(64'h3d1)+:(19)];
-        off_y$2 = word[(64'h3e4)+:(19)];
-        dmaj$0 = word[(64'h3f7)+:(19)];
-        dmaj$1 = word[(64'h40a)+:(19)];
-        dmaj$2 = word[(64'h41d)+:(19)];
-        dmaj$3 = word[(64'h430)+:(19)];
-        dbot$0 = word[(64'h443)+:(19)];
-        dbot$1 = word[(64'h456)+:(19)];
-        dbot$2 = word[(64'h469)+:(19)];
-        dbot$3 = word[(64'h47c)+:(19)];
-        attr0$0 = word[(64'h48f)+:(40)];
-        attr0$1 = word[(64'h4b7)+:(40)];
-        attr0$2 = word[(64'h4df)+:(40)];
-        attr0$3 = word[(64'h507)+:(40)];
-        xn0 = word[(64'h52f)+:(19)];
+        used$0 = word[(64'h313)+:(1)];
+        used$1 = word[(64'h314)+:(1)];
+        used$2 = word[(64'h315)+:(1)];
+        step$0 = word[(64'h316)+:(1)];
+        step$1 = word[(64'h317)+:(1)];
+        step$2 = word[(64'h318)+:(1)];
+        toff$0 = word[(64'h319)+:(19)];
+        toff$1 = word[(64'h32c)+:(19)];
+        toff$2 = word[(64'h33f)+:(19)];
+        xf$0 = word[(64'h352)+:(19)];
+        xf$1 = word[(64'h365)+:(19)];
+        xf$2 = word[(64'h378)+:(19)];
+        xi$0 = word[(64'h38b)+:(19)];
+        xi$1 = word[(64'h39e)+:(19)];
+        xi$2 = word[(64'h3b1)+:(19)];
+        off_y$0 = word[(64'h3c4)+:(19)];
+        off_y$1 = word[(64'h3d7)+:(19)];
+        off_y$2 = word[(64'h3ea)+:(19)];
+        dmaj$0 = word[(64'h3fd)+:(19)];
+        dmaj$1 = word[(64'h410)+:(19)];
+        dmaj$2 = word[(64'h423)+:(19)];
+        dmaj$3 = word[(64'h436)+:(19)];
+        dbot$0 = word[(64'h449)+:(19)];
+        dbot$1 = word[(64'h45c)+:(19)];
+        dbot$2 = word[(64'h46f)+:(19)];
+        dbot$3 = word[(64'h482)+:(19)];
+        attr0$0 = word[(64'h495)+:(40)];
+        attr0$1 = word[(64'h4bd)+:(40)];
+        attr0$2 = word[(64'h4e5)+:(40)];
+        attr0$3 = word[(64'h50d)+:(40)];
+        xn0 = word[(64'h535)+:(19)];
         edy_d$0 = ((edy$0) & 34'h3ffffffff);
         edy_d$1 = ((edy$1) & 34'h3ffffffff);
         edy_d$2 = ((edy$2) & 34'h3ffffffff);
@@ -28854,10 +28950,10 @@ module raster_top$core$triangle_setup$g1(word,maj_left,start_x$0,start_x$1,start
 endmodule // raster_top$core$triangle_setup$g1
 
 
-module raster_top$core$triangle_setup$g2(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$core$triangle_setup$g2(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,used$0,used$1,used$2,step$0,step$1,step$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
-    input wire  [1345:0] word;
+    input wire  [1351:0] word;
     input wire  maj_left;
     input wire  [18:0] start_x$0;
     input wire  [18:0] start_x$1;
@@ -28887,6 +28983,12 @@ module raster_top$core$triangle_setup$g2(word,maj_left,start_x$0,start_x$1,start
     output reg  [12:0] count$0;
     output reg  [12:0] count$1;
     output reg  [12:0] count$2;
+    output reg  used$0;
+    output reg  used$1;
+    output reg  used$2;
+    output reg  step$0;
+    output reg  step$1;
+    output reg  step$2;
     output reg  [18:0] toff$0;
     output reg  [18:0] toff$1;
     output reg  [18:0] toff$2;
@@ -28946,31 +29048,37 @@ module raster_top$core$triangle_setup$g2(word,maj_left,start_x$0,start_x$1,start
         count$0 = word[(64'h2ec)+:(13)];
         count$1 = word[(64'h2f9)+:(13)];
         count$2 = word[(64'h306)+:(13)];
-        toff$0 = word[(64'h313)+:(19)];
-        toff$1 = word[(64'h326)+:(19)];
-        toff$2 = word[(64'h339)+:(19)];
-        xf$0 = word[(64'h34c)+:(19)];
-        xf$1 = word[(64'h35f)+:(19)];
-        xf$2 = word[(64'h372)+:(19)];
-        xi$0 = word[(64'h385)+:(19)];
-        xi$1 = word[(64'h398)+:(19)];
-        xi$2 = word[(64'h3ab)+:(19)];
-        off_y$0 = word[(64'h3be)+:(19)];
-        off_y$1 = word[(64'h3d1)+:(19)];
-        off_y$2 = word[(64'h3e4)+:(19)];
-        dmaj$0 = word[(64'h3f7)+:(19)];
-        dmaj$1 = word[(64'h40a)+:(19)];
-        dmaj$2 = word[(64'h41d)+:(19)];
-        dmaj$3 = word[(64'h430)+:(19)];
-        dbot$0 = word[(64'h443)+:(19)];
-        dbot$1 = word[(64'h456)+:(19)];
-        dbot$2 = word[(64'h469)+:(19)];
-        dbot$3 = word[(64'h47c)+:(19)];
-        attr0$0 = word[(64'h48f)+:(40)];
-        attr0$1 = word[(64'h4b7)+:(40)];
-        attr0$2 = word[(64'h4df)+:(40)];
-        attr0$3 = word[(64'h507)+:(40)];
-        xn0 = word[(64'h52f)+:(19)];
+        used$0 = word[(64'h313)+:(1)];
+        used$1 = word[(64'h314)+:(1)];
+        used$2 = word[(64'h315)+:(1)];
+        step$0 = word[(64'h316)+:(1)];
+        step$1 = word[(64'h317)+:(1)];
+        step$2 = word[(64'h318)+:(1)];
+        toff$0 = word[(64'h319)+:(19)];
+        toff$1 = word[(64'h32c)+:(19)];
+        toff$2 = word[(64'h33f)+:(19)];
+        xf$0 = word[(64'h352)+:(19)];
+        xf$1 = word[(64'h365)+:(19)];
+        xf$2 = word[(64'h378)+:(19)];
+        xi$0 = word[(64'h38b)+:(19)];
+        xi$1 = word[(64'h39e)+:(19)];
+        xi$2 = word[(64'h3b1)+:(19)];
+        off_y$0 = word[(64'h3c4)+:(19)];
+        off_y$1 = word[(64'h3d7)+:(19)];
+        off_y$2 = word[(64'h3ea)+:(19)];
+        dmaj$0 = word[(64'h3fd)+:(19)];
+        dmaj$1 = word[(64'h410)+:(19)];
+        dmaj$2 = word[(64'h423)+:(19)];
+        dmaj$3 = word[(64'h436)+:(19)];
+        dbot$0 = word[(64'h449)+:(19)];
+        dbot$1 = word[(64'h45c)+:(19)];
+        dbot$2 = word[(64'h46f)+:(19)];
+        dbot$3 = word[(64'h482)+:(19)];
+        attr0$0 = word[(64'h495)+:(40)];
+        attr0$1 = word[(64'h4bd)+:(40)];
+        attr0$2 = word[(64'h4e5)+:(40)];
+        attr0$3 = word[(64'h50d)+:(40)];
+        xn0 = word[(64'h535)+:(19)];
         edy_d$0 = ((edy$0) & 34'h3ffffffff);
         edy_d$1 = ((edy$1) & 34'h3ffffffff);
         edy_d$2 = ((edy$2) & 34'h3ffffffff);
@@ -28997,10 +29105,10 @@ module raster_top$core$triangle_setup$g2(word,maj_left,start_x$0,start_x$1,start
 endmodule // raster_top$core$triangle_setup$g2
 
 
-module raster_top$core$triangle_setup$g3(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$core$triangle_setup$g3(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,used$0,used$1,used$2,step$0,step$1,step$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
-    input wire  [1345:0] word;
+    input wire  [1351:0] word;
     input wire  maj_left;
     input wire  [18:0] start_x$0;
     input wire  [18:0] start_x$1;
@@ -29030,6 +29138,12 @@ module raster_top$core$triangle_setup$g3(word,maj_left,start_x$0,start_x$1,start
     output reg  [12:0] count$0;
     output reg  [12:0] count$1;
     output reg  [12:0] count$2;
+    output reg  used$0;
+    output reg  used$1;
+    output reg  used$2;
+    output reg  step$0;
+    output reg  step$1;
+    output reg  step$2;
     output reg  [18:0] toff$0;
     output reg  [18:0] toff$1;
     output reg  [18:0] toff$2;
@@ -29089,31 +29203,37 @@ module raster_top$core$triangle_setup$g3(word,maj_left,start_x$0,start_x$1,start
         count$0 = word[(64'h2ec)+:(13)];
         count$1 = word[(64'h2f9)+:(13)];
         count$2 = word[(64'h306)+:(13)];
-        toff$0 = word[(64'h313)+:(19)];
-        toff$1 = word[(64'h326)+:(19)];
-        toff$2 = word[(64'h339)+:(19)];
-        xf$0 = word[(64'h34c)+:(19)];
-        xf$1 = word[(64'h35f)+:(19)];
-        xf$2 = word[(64'h372)+:(19)];
-        xi$0 = word[(64'h385)+:(19)];
-        xi$1 = word[(64'h398)+:(19)];
-        xi$2 = word[(64'h3ab)+:(19)];
-        off_y$0 = word[(64'h3be)+:(19)];
-        off_y$1 = word[(64'h3d1)+:(19)];
-        off_y$2 = word[(64'h3e4)+:(19)];
-        dmaj$0 = word[(64'h3f7)+:(19)];
-        dmaj$1 = word[(64'h40a)+:(19)];
-        dmaj$2 = word[(64'h41d)+:(19)];
-        dmaj$3 = word[(64'h430)+:(19)];
-        dbot$0 = word[(64'h443)+:(19)];
-        dbot$1 = word[(64'h456)+:(19)];
-        dbot$2 = word[(64'h469)+:(19)];
-        dbot$3 = word[(64'h47c)+:(19)];
-        attr0$0 = word[(64'h48f)+:(40)];
-        attr0$1 = word[(64'h4b7)+:(40)];
-        attr0$2 = word[(64'h4df)+:(40)];
-        attr0$3 = word[(64'h507)+:(40)];
-        xn0 = word[(64'h52f)+:(19)];
+        used$0 = word[(64'h313)+:(1)];
+        used$1 = word[(64'h314)+:(1)];
+        used$2 = word[(64'h315)+:(1)];
+        step$0 = word[(64'h316)+:(1)];
+        step$1 = word[(64'h317)+:(1)];
+        step$2 = word[(64'h318)+:(1)];
+        toff$0 = word[(64'h319)+:(19)];
+        toff$1 = word[(64'h32c)+:(19)];
+        toff$2 = word[(64'h33f)+:(19)];
+        xf$0 = word[(64'h352)+:(19)];
+        xf$1 = word[(64'h365)+:(19)];
+        xf$2 = word[(64'h378)+:(19)];
+        xi$0 = word[(64'h38b)+:(19)];
+        xi$1 = word[(64'h39e)+:(19)];
+        xi$2 = word[(64'h3b1)+:(19)];
+        off_y$0 = word[(64'h3c4)+:(19)];
+        off_y$1 = word[(64'h3d7)+:(19)];
+        off_y$2 = word[(64'h3ea)+:(19)];
+        dmaj$0 = word[(64'h3fd)+:(19)];
+        dmaj$1 = word[(64'h410)+:(19)];
+        dmaj$2 = word[(64'h423)+:(19)];
+        dmaj$3 = word[(64'h436)+:(19)];
+        dbot$0 = word[(64'h449)+:(19)];
+        dbot$1 = word[(64'h45c)+:(19)];
+        dbot$2 = word[(64'h46f)+:(19)];
+        dbot$3 = word[(64'h482)+:(19)];
+        attr0$0 = word[(64'h495)+:(40)];
+        attr0$1 = word[(64'h4bd)+:(40)];
+        attr0$2 = word[(64'h4e5)+:(40)];
+        attr0$3 = word[(64'h50d)+:(40)];
+        xn0 = word[(64'h535)+:(19)];
         edy_d$0 = ((edy$0) & 34'h3ffffffff);
         edy_d$1 = ((edy$1) & 34'h3ffffffff);
         edy_d$2 = ((edy$2) & 34'h3ffffffff);
@@ -29140,10 +29260,10 @@ module raster_top$core$triangle_setup$g3(word,maj_left,start_x$0,start_x$1,start
 endmodule // raster_top$core$triangle_setup$g3
 
 
-module raster_top$core$triangle_setup$g4(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$core$triangle_setup$g4(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,used$0,used$1,used$2,step$0,step$1,step$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
-    input wire  [1345:0] word;
+    input wire  [1351:0] word;
     input wire  maj_left;
     input wire  [18:0] start_x$0;
     input wire  [18:0] start_x$1;
@@ -29173,6 +29293,12 @@ module raster_top$core$triangle_setup$g4(word,maj_left,start_x$0,start_x$1,start
     output reg  [12:0] count$0;
     output reg  [12:0] count$1;
     output reg  [12:0] count$2;
+    output reg  used$0;
+    output reg  used$1;
+    output reg  used$2;
+    output reg  step$0;
+    output reg  step$1;
+    output reg  step$2;
     output reg  [18:0] toff$0;
     output reg  [18:0] toff$1;
     output reg  [18:0] toff$2;
@@ -29232,31 +29358,37 @@ module raster_top$core$triangle_setup$g4(word,maj_left,start_x$0,start_x$1,start
         count$0 = word[(64'h2ec)+:(13)];
         count$1 = word[(64'h2f9)+:(13)];
         count$2 = word[(64'h306)+:(13)];
-        toff$0 = word[(64'h313)+:(19)];
-        toff$1 = word[(64'h326)+:(19)];
-        toff$2 = word[(64'h339)+:(19)];
-        xf$0 = word[(64'h34c)+:(19)];
-        xf$1 = word[(64'h35f)+:(19)];
-        xf$2 = word[(64'h372)+:(19)];
-        xi$0 = word[(64'h385)+:(19)];
-        xi$1 = word[(64'h398)+:(19)];
-        xi$2 = word[(64'h3ab)+:(19)];
-        off_y$0 = word[(64'h3be)+:(19)];
-        off_y$1 = word[(64'h3d1)+:(19)];
-        off_y$2 = word[(64'h3e4)+:(19)];
-        dmaj$0 = word[(64'h3f7)+:(19)];
-        dmaj$1 = word[(64'h40a)+:(19)];
-        dmaj$2 = word[(64'h41d)+:(19)];
-        dmaj$3 = word[(64'h430)+:(19)];
-        dbot$0 = word[(64'h443)+:(19)];
-        dbot$1 = word[(64'h456)+:(19)];
-        dbot$2 = word[(64'h469)+:(19)];
-        dbot$3 = word[(64'h47c)+:(19)];
-        attr0$0 = word[(64'h48f)+:(40)];
-        attr0$1 = word[(64'h4b7)+:(40)];
-        attr0$2 = word[(64'h4df)+:(40)];
-        attr0$3 = word[(64'h507)+:(40)];
-        xn0 = word[(64'h52f)+:(19)];
+        used$0 = word[(64'h313)+:(1)];
+        used$1 = word[(64'h314)+:(1)];
+        used$2 = word[(64'h315)+:(1)];
+        step$0 = word[(64'h316)+:(1)];
+        step$1 = word[(64'h317)+:(1)];
+        step$2 = word[(64'h318)+:(1)];
+        toff$0 = word[(64'h319)+:(19)];
+        toff$1 = word[(64'h32c)+:(19)];
+        toff$2 = word[(64'h33f)+:(19)];
+        xf$0 = word[(64'h352)+:(19)];
+        xf$1 = word[(64'h365)+:(19)];
+        xf$2 = word[(64'h378)+:(19)];
+        xi$0 = word[(64'h38b)+:(19)];
+        xi$1 = word[(64'h39e)+:(19)];
+        xi$2 = word[(64'h3b1)+:(19)];
+        off_y$0 = word[(64'h3c4)+:(19)];
+        off_y$1 = word[(64'h3d7)+:(19)];
+        off_y$2 = word[(64'h3ea)+:(19)];
+        dmaj$0 = word[(64'h3fd)+:(19)];
+        dmaj$1 = word[(64'h410)+:(19)];
+        dmaj$2 = word[(64'h423)+:(19)];
+        dmaj$3 = word[(64'h436)+:(19)];
+        dbot$0 = word[(64'h449)+:(19)];
+        dbot$1 = word[(64'h45c)+:(19)];
+        dbot$2 = word[(64'h46f)+:(19)];
+        dbot$3 = word[(64'h482)+:(19)];
+        attr0$0 = word[(64'h495)+:(40)];
+        attr0$1 = word[(64'h4bd)+:(40)];
+        attr0$2 = word[(64'h4e5)+:(40)];
+        attr0$3 = word[(64'h50d)+:(40)];
+        xn0 = word[(64'h535)+:(19)];
         edy_d$0 = ((edy$0) & 34'h3ffffffff);
         edy_d$1 = ((edy$1) & 34'h3ffffffff);
         edy_d$2 = ((edy$2) & 34'h3ffffffff);
@@ -29283,10 +29415,10 @@ module raster_top$core$triangle_setup$g4(word,maj_left,start_x$0,start_x$1,start
 endmodule // raster_top$core$triangle_setup$g4
 
 
-module raster_top$core$triangle_setup$g5(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
+module raster_top$core$triangle_setup$g5(word,maj_left,start_x$0,start_x$1,start_x$2,kdx$0,kdx$1,kdx$2,kdy$0,kdy$1,kdy$2,up,edx$0,edx$1,edx$2,edy$0,edy$1,edy$2,edy_d$0,edy_d$1,edy_d$2,ed16$0,ed16$1,ed16$2,cy$0,cy$1,cy$2,count$0,count$1,count$2,used$0,used$1,used$2,step$0,step$1,step$2,toff$0,toff$1,toff$2,xf$0,xf$1,xf$2,xi$0,xi$1,xi$2,off_x$0,off_x$1,off_x$2,off_y$0,off_y$1,off_y$2,dmaj$0,dmaj$1,dmaj$2,dmaj$3,dbot$0,dbot$1,dbot$2,dbot$3,attr0$0,attr0$1,attr0$2,attr0$3);
     
     // Module arguments
-    input wire  [1345:0] word;
+    input wire  [1351:0] word;
     input wire  maj_left;
     input wire  [18:0] start_x$0;
     input wire  [18:0] start_x$1;
@@ -29316,6 +29448,12 @@ module raster_top$core$triangle_setup$g5(word,maj_left,start_x$0,start_x$1,start
     output reg  [12:0] count$0;
     output reg  [12:0] count$1;
     output reg  [12:0] count$2;
+    output reg  used$0;
+    output reg  used$1;
+    output reg  used$2;
+    output reg  step$0;
+    output reg  step$1;
+    output reg  step$2;
     output reg  [18:0] toff$0;
     output reg  [18:0] toff$1;
     output reg  [18:0] toff$2;
@@ -29375,31 +29513,37 @@ module raster_top$core$triangle_setup$g5(word,maj_left,start_x$0,start_x$1,start
         count$0 = word[(64'h2ec)+:(13)];
         count$1 = word[(64'h2f9)+:(13)];
         count$2 = word[(64'h306)+:(13)];
-        toff$0 = word[(64'h313)+:(19)];
-        toff$1 = word[(64'h326)+:(19)];
-        toff$2 = word[(64'h339)+:(19)];
-        xf$0 = word[(64'h34c)+:(19)];
-        xf$1 = word[(64'h35f)+:(19)];
-        xf$2 = word[(64'h372)+:(19)];
-        xi$0 = word[(64'h385)+:(19)];
-        xi$1 = word[(64'h398)+:(19)];
-        xi$2 = word[(64'h3ab)+:(19)];
-        off_y$0 = word[(64'h3be)+:(19)];
-        off_y$1 = word[(64'h3d1)+:(19)];
-        off_y$2 = word[(64'h3e4)+:(19)];
-        dmaj$0 = word[(64'h3f7)+:(19)];
-        dmaj$1 = word[(64'h40a)+:(19)];
-        dmaj$2 = word[(64'h41d)+:(19)];
-        dmaj$3 = word[(64'h430)+:(19)];
-        dbot$0 = word[(64'h443)+:(19)];
-        dbot$1 = word[(64'h456)+:(19)];
-        dbot$2 = word[(64'h469)+:(19)];
-        dbot$3 = word[(64'h47c)+:(19)];
-        attr0$0 = word[(64'h48f)+:(40)];
-        attr0$1 = word[(64'h4b7)+:(40)];
-        attr0$2 = word[(64'h4df)+:(40)];
-        attr0$3 = word[(64'h507)+:(40)];
-        xn0 = word[(64'h52f)+:(19)];
+        used$0 = word[(64'h313)+:(1)];
+        used$1 = word[(64'h314)+:(1)];
+        used$2 = word[(64'h315)+:(1)];
+        step$0 = word[(64'h316)+:(1)];
+        step$1 = word[(64'h317)+:(1)];
+        step$2 = word[(64'h318)+:(1)];
+        toff$0 = word[(64'h319)+:(19)];
+        toff$1 = word[(64'h32c)+:(19)];
+        toff$2 = word[(64'h33f)+:(19)];
+        xf$0 = word[(64'h352)+:(19)];
+        xf$1 = word[(64'h365)+:(19)];
+        xf$2 = word[(64'h378)+:(19)];
+        xi$0 = word[(64'h38b)+:(19)];
+        xi$1 = word[(64'h39e)+:(19)];
+        xi$2 = word[(64'h3b1)+:(19)];
+        off_y$0 = word[(64'h3c4)+:(19)];
+        off_y$1 = word[(64'h3d7)+:(19)];
+        off_y$2 = word[(64'h3ea)+:(19)];
+        dmaj$0 = word[(64'h3fd)+:(19)];
+        dmaj$1 = word[(64'h410)+:(19)];
+        dmaj$2 = word[(64'h423)+:(19)];
+        dmaj$3 = word[(64'h436)+:(19)];
+        dbot$0 = word[(64'h449)+:(19)];
+        dbot$1 = word[(64'h45c)+:(19)];
+        dbot$2 = word[(64'h46f)+:(19)];
+        dbot$3 = word[(64'h482)+:(19)];
+        attr0$0 = word[(64'h495)+:(40)];
+        attr0$1 = word[(64'h4bd)+:(40)];
+        attr0$2 = word[(64'h4e5)+:(40)];
+        attr0$3 = word[(64'h50d)+:(40)];
+        xn0 = word[(64'h535)+:(19)];
         edy_d$0 = ((edy$0) & 34'h3ffffffff);
         edy_d$1 = ((edy$1) & 34'h3ffffffff);
         edy_d$2 = ((edy$2) & 34'h3ffffffff);
@@ -29448,13 +29592,13 @@ endmodule // raster_top$core$triangle_setup$gate_r
 module raster_top$core$triangle_setup$geo$0(d,q,clock);
     
     // Module arguments
-    input wire  [1345:0] d;
-    output reg  [1345:0] q;
+    input wire  [1351:0] d;
+    output reg  [1351:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1346'h0;
+       q = 1352'h0;
     end
     
     always @(posedge clock) begin
@@ -29467,13 +29611,13 @@ endmodule // raster_top$core$triangle_setup$geo$0
 module raster_top$core$triangle_setup$geo$1(d,q,clock);
     
     // Module arguments
-    input wire  [1345:0] d;
-    output reg  [1345:0] q;
+    input wire  [1351:0] d;
+    output reg  [1351:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1346'h0;
+       q = 1352'h0;
     end
     
     always @(posedge clock) begin
@@ -29486,13 +29630,13 @@ endmodule // raster_top$core$triangle_setup$geo$1
 module raster_top$core$triangle_setup$geo$2(d,q,clock);
     
     // Module arguments
-    input wire  [1345:0] d;
-    output reg  [1345:0] q;
+    input wire  [1351:0] d;
+    output reg  [1351:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1346'h0;
+       q = 1352'h0;
     end
     
     always @(posedge clock) begin
@@ -29505,13 +29649,13 @@ endmodule // raster_top$core$triangle_setup$geo$2
 module raster_top$core$triangle_setup$geo$3(d,q,clock);
     
     // Module arguments
-    input wire  [1345:0] d;
-    output reg  [1345:0] q;
+    input wire  [1351:0] d;
+    output reg  [1351:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1346'h0;
+       q = 1352'h0;
     end
     
     always @(posedge clock) begin
@@ -29524,13 +29668,13 @@ endmodule // raster_top$core$triangle_setup$geo$3
 module raster_top$core$triangle_setup$geo$4(d,q,clock);
     
     // Module arguments
-    input wire  [1345:0] d;
-    output reg  [1345:0] q;
+    input wire  [1351:0] d;
+    output reg  [1351:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1346'h0;
+       q = 1352'h0;
     end
     
     always @(posedge clock) begin
@@ -29543,13 +29687,13 @@ endmodule // raster_top$core$triangle_setup$geo$4
 module raster_top$core$triangle_setup$geo$5(d,q,clock);
     
     // Module arguments
-    input wire  [1345:0] d;
-    output reg  [1345:0] q;
+    input wire  [1351:0] d;
+    output reg  [1351:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1346'h0;
+       q = 1352'h0;
     end
     
     always @(posedge clock) begin
@@ -29581,7 +29725,7 @@ module raster_top$core$triangle_setup$geometry(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$
     input wire  [7:0] vc$7;
     input wire  [7:0] vc$8;
     input wire  [5:0] crosses;
-    output reg  [1345:0] word;
+    output reg  [1351:0] word;
     
     // Constant declarations
     localparam  frac = 8'h4;
@@ -29852,31 +29996,37 @@ module raster_top$core$triangle_setup$geometry(vx$0,vx$1,vx$2,vy$0,vy$1,vy$2,vz$
         word[(64'h2ec)+:(13)] = count$0;
         word[(64'h2f9)+:(13)] = count$1;
         word[(64'h306)+:(13)] = count$2;
-        word[(64'h313)+:(19)] = toff$0;
-        word[(64'h326)+:(19)] = toff$1;
-        word[(64'h339)+:(19)] = toff$2;
-        word[(64'h34c)+:(19)] = xf$0;
-        word[(64'h35f)+:(19)] = xf$1;
-        word[(64'h372)+:(19)] = xf$2;
-        word[(64'h385)+:(19)] = xi$0;
-        word[(64'h398)+:(19)] = xi$1;
-        word[(64'h3ab)+:(19)] = xi$2;
-        word[(64'h3be)+:(19)] = off_y$0;
-        word[(64'h3d1)+:(19)] = off_y$1;
-        word[(64'h3e4)+:(19)] = off_y$2;
-        word[(64'h3f7)+:(19)] = dmaj$0;
-        word[(64'h40a)+:(19)] = dmaj$1;
-        word[(64'h41d)+:(19)] = dmaj$2;
-        word[(64'h430)+:(19)] = dmaj$3;
-        word[(64'h443)+:(19)] = dbot$0;
-        word[(64'h456)+:(19)] = dbot$1;
-        word[(64'h469)+:(19)] = dbot$2;
-        word[(64'h47c)+:(19)] = dbot$3;
-        word[(64'h48f)+:(40)] = attr0$0;
-        word[(64'h4b7)+:(40)] = attr0$1;
-        word[(64'h4df)+:(40)] = attr0$2;
-        word[(64'h507)+:(40)] = attr0$3;
-        word[(64'h52f)+:(19)] = xn$0;
+        word[(64'h313)+:(1)] = count$0 != 32'h0;
+        word[(64'h314)+:(1)] = count$1 != 32'h0;
+        word[(64'h315)+:(1)] = count$2 != 32'h0;
+        word[(64'h316)+:(1)] = count$0 > 32'h1;
+        word[(64'h317)+:(1)] = count$1 > 32'h1;
+        word[(64'h318)+:(1)] = count$2 > 32'h1;
+        word[(64'h319)+:(19)] = toff$0;
+        word[(64'h32c)+:(19)] = toff$1;
+        word[(64'h33f)+:(19)] = toff$2;
+        word[(64'h352)+:(19)] = xf$0;
+        word[(64'h365)+:(19)] = xf$1;
+        word[(64'h378)+:(19)] = xf$2;
+        word[(64'h38b)+:(19)] = xi$0;
+        word[(64'h39e)+:(19)] = xi$1;
+        word[(64'h3b1)+:(19)] = xi$2;
+        word[(64'h3c4)+:(19)] = off_y$0;
+        word[(64'h3d7)+:(19)] = off_y$1;
+        word[(64'h3ea)+:(19)] = off_y$2;
+        word[(64'h3fd)+:(19)] = dmaj$0;
+        word[(64'h410)+:(19)] = dmaj$1;
+        word[(64'h423)+:(19)] = dmaj$2;
+        word[(64'h436)+:(19)] = dmaj$3;
+        word[(64'h449)+:(19)] = dbot$0;
+        word[(64'h45c)+:(19)] = dbot$1;
+        word[(64'h46f)+:(19)] = dbot$2;
+        word[(64'h482)+:(19)] = dbot$3;
+        word[(64'h495)+:(40)] = attr0$0;
+        word[(64'h4bd)+:(40)] = attr0$1;
+        word[(64'h4e5)+:(40)] = attr0$2;
+        word[(64'h50d)+:(40)] = attr0$3;
+        word[(64'h535)+:(19)] = xn$0;
     end
     
 endmodule // raster_top$core$triangle_setup$geometry

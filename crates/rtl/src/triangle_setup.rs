@@ -775,14 +775,14 @@ impl Logic for TriangleSetup {
             // Unused divisions go in as 0/1 (`model::divider`).
             if self.at_iss[1 + 2 * e].val() {
                 self.div_v.d.next = true;
-                if self.g0.count[e].val() != 0 {
+                if self.g0.used[e].val() {
                     self.div_n.d.next = self.num[e].q.val().get_bits::<DIV_N>(0);
                     self.div_d.d.next = self.g0.ed16[e].val();
                 }
             }
             if self.at_iss[2 + 2 * e].val() {
                 self.div_v.d.next = true;
-                if self.g0.count[e].val() > 1 {
+                if self.g0.step[e].val() {
                     self.div_n.d.next = self.g0.edx[e].val().get_bits::<DIV_N>(0);
                     self.div_d.d.next = self.g0.edy_d[e].val();
                 }

@@ -50,6 +50,12 @@ pub struct GeometryWord {
     pub count_0: Bits<PIXEL>,
     pub count_1: Bits<PIXEL>,
     pub count_2: Bits<PIXEL>,
+    pub used_0: Bit,
+    pub used_1: Bit,
+    pub used_2: Bit,
+    pub step_0: Bit,
+    pub step_1: Bit,
+    pub step_2: Bit,
     pub toff_0: Bits<NB>,
     pub toff_1: Bits<NB>,
     pub toff_2: Bits<NB>,
@@ -317,6 +323,12 @@ impl Logic for Geometry {
         self.word.next.count_0 = self.count[0].val();
         self.word.next.count_1 = self.count[1].val();
         self.word.next.count_2 = self.count[2].val();
+        self.word.next.used_0 = self.count[0].val() != 0;
+        self.word.next.used_1 = self.count[1].val() != 0;
+        self.word.next.used_2 = self.count[2].val() != 0;
+        self.word.next.step_0 = self.count[0].val() > 1;
+        self.word.next.step_1 = self.count[1].val() > 1;
+        self.word.next.step_2 = self.count[2].val() > 1;
         self.word.next.toff_0 = self.toff[0].val();
         self.word.next.toff_1 = self.toff[1].val();
         self.word.next.toff_2 = self.toff[2].val();
@@ -365,6 +377,10 @@ pub struct GeometryView {
     pub ed16: [Signal<Out, Bits<DIV_D>>; 3],
     pub cy: [Signal<Out, Bits<NB>>; 3],
     pub count: [Signal<Out, Bits<PIXEL>>; 3],
+    /// The edge's start division is used (count > 0) and its step division (count > 1):
+    /// computed with the count, so that the divisor's selection reads registers only.
+    pub used: [Signal<Out, Bit>; 3],
+    pub step: [Signal<Out, Bit>; 3],
     pub toff: [Signal<Out, Bits<NB>>; 3],
     pub xf: [Signal<Out, Bits<NB>>; 3],
     pub xi: [Signal<Out, Bits<NB>>; 3],
@@ -413,6 +429,12 @@ impl Logic for GeometryView {
         self.count[0].next = self.word.val().count_0;
         self.count[1].next = self.word.val().count_1;
         self.count[2].next = self.word.val().count_2;
+        self.used[0].next = self.word.val().used_0;
+        self.used[1].next = self.word.val().used_1;
+        self.used[2].next = self.word.val().used_2;
+        self.step[0].next = self.word.val().step_0;
+        self.step[1].next = self.word.val().step_1;
+        self.step[2].next = self.word.val().step_2;
         self.toff[0].next = self.word.val().toff_0;
         self.toff[1].next = self.word.val().toff_1;
         self.toff[2].next = self.word.val().toff_2;
