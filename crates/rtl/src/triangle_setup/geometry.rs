@@ -25,7 +25,8 @@ const S: u32 = FORMATS.xy.frac;
 /// vectors e_maj (v0 -> v2), e_bot (v0 -> v1), e_top (v1 -> v2) (`kdx`, `kdy`); the walk
 /// direction (`up`, 003: the triangle crosses the top boundary and not the bottom one); per
 /// edge in walk order (e_maj, then the short edges as `TriangleSetupOut::short`) dx, dy,
-/// the scanline centre, count, the start division's offsets (t, x fraction, x integer) and
+/// the scanline centre, count (and whether it is over 0 and over 1: the edge's start and
+/// step divisions used), the start division's offsets (t, x fraction, x integer) and
 /// the tracked pixel centre's y offset from v0; the attribute differences from v0 along
 /// e_maj and e_bot (z, R, G, B) and v0's attributes in a lane; v0's x in the narrow domain.
 /// Fields `<name>_<index>` are [`GeometryView`]'s arrays.
