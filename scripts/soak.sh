@@ -19,8 +19,8 @@
 #   3. synthesis    every file in hdl-out/, each unit alone too, in all three flows,
 #                   mapped to cells, raster_top's barycentric and SE back ends (in
 #                   hdl-out/'s directories) by synth_ecp5 only (the test command
-#                   synthesizes each distinct module once, without iCE40, and gpu_top, se,
-#                   vector and texture_path only up to synth_ecp5's gate mapping); then
+#                   synthesizes each distinct module once, without iCE40, and only
+#                   elaborates gpu_top, se, vector and texture_path); then
 #                   Verilator lint of hdl-out/ and of every raster_top
 #                   variant, classes 11 and 12 and rtl::custom too (scripts/lint.sh)
 #   4. P&R          place and route of every unit of the default design on iCE40 and ECP5

@@ -10,15 +10,16 @@
 #                             triangle_setup, edge_walk, span, pixel_bus and gpu_regs as its
 #                             submodules), se.v, vector.v and texture_path.v (which holds
 #                             texture_setup and texture_unit, and in it texture_coords,
-#                             texture_address, texture_cache and texture_filter) through
-#                             `synth_ecp5`'s coarse passes and its RAM mapping (`-run
-#                             begin:map_gates`: proc, flatten, opt, fsm, wreduce, share,
-#                             alumacc, memory, BRAM and LUTRAM mapping, memory_map;
-#                             everything but the mapping to gates and LUTs, which took
-#                             149 s of gpu_top's 229 s of CPU and 78 s of texture_path's
-#                             139 s; stopped before the RAM mapping, texture_coords' log
-#                             ROMs keep undriven wires that `check -assert` refuses);
-#                             every other unit not listed in SUBMODULES (pixel_out.v, ept.v,
+#                             texture_address, texture_cache and texture_filter) elaborated:
+#                             read, hierarchy, proc, flatten and `opt -fast` (memories kept
+#                             as Yosys memories: mapping texture_coords' log ROMs to logic
+#                             alone took 312 s of CPU). That is where the emitted Verilog can
+#                             fail synthesis (syntax Yosys refuses, a latch, a multiply driven
+#                             or undriven net, a logic loop), in 55 s of CPU for the four at
+#                             stop 61, where synth_ecp5's coarse passes up to its gate mapping
+#                             took 327 s; the coarse passes, the mapping and the place and
+#                             route are the soak's (--all, and `edgepaint report`).
+#                             Every other unit not listed in SUBMODULES (pixel_out.v, ept.v,
 #                             se_cmd.v, blend.v) by generic `synth -flatten` and
 #                             `synth_ecp5`. raster_top.v is gpu_top's scanline units with
 #                             pixel_out behind them: its `synth_ecp5` took 176 s of CPU for
@@ -41,9 +42,8 @@ fi
 # (texture_setup, and texture_unit with its four).
 SUBMODULES=(command_parser triangle_queue cull_sort divider triangle_setup edge_walk span pixel_bus gpu_regs raster_top
     texture_coords texture_address texture_cache texture_filter texture_unit texture_setup)
-# Units the test command takes through synth_ecp5's coarse passes and its RAM mapping alone
-# (--all runs every flow, mapped to cells).
-COARSE_ONLY=(gpu_top se vector texture_path)
+# Units the test command elaborates only (--all runs every flow, mapped to cells).
+ELABORATE_ONLY=(gpu_top se vector texture_path)
 flows=(generic ecp5)
 all=0
 if [[ ${1:-} == --all ]]; then
@@ -81,7 +81,7 @@ synth_one() {
         generic) cmd="synth -flatten -top $top; check -assert; stat" ;;
         ice40) cmd="synth_ice40 -top $top -json $out/$name.ice40.json; check -assert; stat" ;;
         ecp5) cmd="synth_ecp5 -top $top -json $out/$name.ecp5.json; check -assert; stat" ;;
-        coarse) cmd="synth_ecp5 -top $top -run begin:map_gates; check -assert; stat" ;;
+        elaborate) cmd="flatten; opt -fast; check -assert; stat" ;;
     esac
     log=$out/$name.$flow.log
     # No latches: a combinational output some path leaves unassigned (a `match` without a
@@ -104,8 +104,8 @@ for f in "${files[@]}"; do
     unit_flows=("${flows[@]}")
     if [[ $(basename "$(dirname "$f")") == "$unit"-* ]]; then
         unit_flows=(ecp5)
-    elif [[ $all == 0 && " ${COARSE_ONLY[*]} " =~ " $unit " ]]; then
-        unit_flows=(coarse)
+    elif [[ $all == 0 && " ${ELABORATE_ONLY[*]} " =~ " $unit " ]]; then
+        unit_flows=(elaborate)
     fi
     for flow in "${unit_flows[@]}"; do
         printf '%s\0%s\0%s\0' "$f" "$flow" "$out"

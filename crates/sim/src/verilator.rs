@@ -39,8 +39,27 @@ const IGNORED_WARNINGS: &[&str] = &["WIDTH"];
 const SHIM_VERSION: u32 = 2;
 
 /// The flags every model and the runtime are Verilated and compiled with: the runtime
-/// built once serves every model only because they agree.
-const VERILATOR_FLAGS: &[&str] = &["--cc", "-sv", "--build", "-CFLAGS", "-fPIC"];
+/// built once serves every model only because they agree. `OPT_SLOW=-O0`: a large model's
+/// `__Slow` files (construction and the initial settle, run once) unoptimised, which halves
+/// their compile time (raster_top's: 4.1 s at Verilator's default -Os, 2.0 s at -O0) and
+/// leaves the code run every cycle as fast as before.
+const VERILATOR_FLAGS: &[&str] = &["--cc", "-sv", "--build", "-CFLAGS", "-fPIC", "-MAKEFLAGS", "OPT_SLOW=-O0"];
+
+/// The environment variable that sets the C++ optimisation of a model's code run every cycle
+/// (Verilator's `OPT_FAST`; its default, -Os, when unset). The test command sets -O1
+/// (`scripts/test-build-env.sh`): raster_top's model then compiles in 3.9 s rather than 5.8
+/// and simulates at about half the speed, which its tests, most of them in rust-hdl's far
+/// slower simulator too, do not notice. `render --engine rtl` and the benches keep -Os.
+const MODEL_OPT_VAR: &str = "EDGEPAINT_MODEL_OPT";
+
+/// The optimisation [`MODEL_OPT_VAR`] asks for, if any (`value`: the variable's value).
+fn model_opt(value: Option<&str>) -> Result<Option<&str>, String> {
+    match value {
+        None | Some("") => Ok(None),
+        Some(o @ ("-O0" | "-O1" | "-O2" | "-O3" | "-Os")) => Ok(Some(o)),
+        Some(o) => Err(format!("{MODEL_OPT_VAR} is {o:?}: it takes -O0, -O1, -O2, -O3 or -Os (or unset: -Os)")),
+    }
+}
 
 /// Where edgepaint keeps what it builds to simulate (emitted Verilog, Verilated models):
 /// the Cargo target directory this binary was built in, so artifacts follow
@@ -159,12 +178,14 @@ impl Verilated {
         let version = check_verilator("verilator")?;
         let verilog = std::fs::read_to_string(file).map_err(|e| format!("reading {}: {e}", file.display()))?;
         let shim = shim(unit, ports);
-        let dir =
-            target_dir().join("verilator").join(format!("{unit}-{:016x}", hash(&(&version, unit, &verilog, &shim))));
+        let opt_var = std::env::var(MODEL_OPT_VAR).ok();
+        let opt = model_opt(opt_var.as_deref())?;
+        let key = (&version, unit, &verilog, &shim, opt);
+        let dir = target_dir().join("verilator").join(format!("{unit}-{:016x}", hash(&key)));
         let lib = dir.join(format!("libV{unit}.so"));
         once(&lib, || {
             let runtime = runtime(&version)?;
-            build(unit, file, &shim, &runtime, &dir, &lib)
+            build(unit, file, &shim, opt, &runtime, &dir, &lib)
         })?;
         // SAFETY: the library is the model just built from our own shim; loading it runs
         // only Verilator's static initialisers.
@@ -295,14 +316,25 @@ fn runtime(version: &str) -> Result<PathBuf, String> {
 }
 
 /// Verilates `file` with `shim` in a directory of this thread's own, compiling only the
-/// model's classes, links them with the `runtime` into a shared library and renames it to
-/// `lib` (in `dir`).
-fn build(unit: &str, file: &Path, shim: &str, runtime: &Path, dir: &Path, lib: &Path) -> Result<(), String> {
+/// model's classes (its per-cycle code at optimisation `opt`, Verilator's default if none),
+/// links them with the `runtime` into a shared library and renames it to `lib` (in `dir`).
+fn build(
+    unit: &str,
+    file: &Path,
+    shim: &str,
+    opt: Option<&str>,
+    runtime: &Path,
+    dir: &Path,
+    lib: &Path,
+) -> Result<(), String> {
     let work = work_dir_beside(dir)?;
     let shim_file = work.join("shim.cpp");
     std::fs::write(&shim_file, shim).map_err(|e| format!("writing {}: {e}", shim_file.display()))?;
     let archive = format!("libV{unit}.a");
     let mut verilator = verilator(&work, &archive);
+    if let Some(o) = opt {
+        verilator.args(["-MAKEFLAGS", &format!("OPT_FAST={o}")]);
+    }
     verilator.args(["--top-module", unit]).arg(file).arg(&shim_file);
     run(&mut verilator, &format!("Verilating {}", file.display()))?;
     let linked = work.join(format!("libV{unit}.so"));
@@ -455,7 +487,7 @@ impl Sim for VlSim {
 
 #[cfg(test)]
 mod tests {
-    use super::{once, work_dir};
+    use super::{model_opt, once, work_dir};
     use std::ffi::OsString;
     use std::path::{Path, PathBuf};
 
@@ -469,6 +501,20 @@ mod tests {
             std::fs::write(target.join(m), "").unwrap();
         }
         (target.clone(), target.join("release").join("edgepaint"), root)
+    }
+
+    /// EDGEPAINT_MODEL_OPT: unset or empty is Verilator's default; a level is passed on;
+    /// anything else is an error naming the variable and what it takes.
+    #[test]
+    fn model_opt_takes_a_level_or_nothing() {
+        assert_eq!(model_opt(None), Ok(None));
+        assert_eq!(model_opt(Some("")), Ok(None));
+        assert_eq!(model_opt(Some("-O1")), Ok(Some("-O1")));
+        assert_eq!(model_opt(Some("-Os")), Ok(Some("-Os")));
+        for bad in ["O1", "-O1 -march=native", "-Ofast", "fast"] {
+            let e = model_opt(Some(bad)).unwrap_err();
+            assert!(e.contains("EDGEPAINT_MODEL_OPT") && e.contains(bad) && e.contains("-O1"), "{e}");
+        }
     }
 
     fn env<'a>(vars: &'a [(&'a str, &'a str)]) -> impl Fn(&str) -> Option<OsString> + 'a {
