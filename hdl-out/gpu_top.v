@@ -9009,6 +9009,9 @@ module gpu_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp
     reg  [12:0] last$d;
     wire  [12:0] last$q;
     reg  last$clock;
+    reg  at_last$d;
+    wire  at_last$q;
+    reg  at_last$clock;
     reg  [9:0] y$d;
     wire  [9:0] y$q;
     reg  y$clock;
@@ -9088,12 +9091,15 @@ module gpu_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp
     reg  o_rgb2$clock;
     
     // Local signals
+    reg  [12:0] x_next;
+    reg  [12:0] x_first;
+    reg  [12:0] x_last;
+    reg  dropped;
     reg  [12:0] width_x;
     reg  valid;
     reg  [7:0] rgb0;
     reg  [7:0] rgb1;
     reg  [7:0] rgb2;
-    reg  at_last;
     reg  advance;
     reg  ready;
     reg  accept;
@@ -9129,6 +9135,11 @@ module gpu_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp
         .d(last$d),
         .q(last$q),
         .clock(last$clock)
+    );
+    gpu_top$core$span$at_last at_last(
+        .d(at_last$d),
+        .q(at_last$q),
+        .clock(at_last$clock)
     );
     gpu_top$core$span$y y(
         .d(y$d),
@@ -9265,6 +9276,7 @@ module gpu_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp
         left$clock = clock;
         x$clock = clock;
         last$clock = clock;
+        at_last$clock = clock;
         y$clock = clock;
         a_z$clock = clock;
         a_c0$clock = clock;
@@ -9286,6 +9298,7 @@ module gpu_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp
         left$d = left$q;
         x$d = x$q;
         last$d = last$q;
+        at_last$d = at_last$q;
         y$d = y$q;
         a_z$d = a_z$q;
         a_c0$d = a_c0$q;
@@ -9343,9 +9356,12 @@ module gpu_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp
         out$rgb1 = o_rgb1$q;
         out$rgb2 = o_rgb2$q;
         idle = ~busy$q & ~o_valid$q;
-        at_last = drop$q | (x$q == last$q);
+        x_next = x$q + 32'h1;
+        if (left$q) begin
+            x_next = x$q - 32'h1;
+        end
         advance = busy$q & (~o_valid$q | out$ready);
-        ready = ~busy$q | (at_last & advance);
+        ready = ~busy$q | (at_last$q & advance);
         inp$ready = ready;
         accept = inp$valid & ready;
         if (out$ready) begin
@@ -9359,19 +9375,19 @@ module gpu_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp
             o_rgb0$d = rgb0;
             o_rgb1$d = rgb1;
             o_rgb2$d = rgb2;
-            if (at_last) begin
+            if (at_last$q) begin
                 busy$d = 1'b0;
             end
             else begin
+                x$d = x_next;
+                at_last$d = x_next == last$q;
                 if (left$q) begin
-                    x$d = x$q - 32'h1;
                     a_z$d = a_z$q - d_z$q;
                     a_c0$d = a_c0$q - d_c0$q;
                     a_c1$d = a_c1$q - d_c1$q;
                     a_c2$d = a_c2$q - d_c2$q;
                 end
                 else begin
-                    x$d = x$q + 32'h1;
                     a_z$d = a_z$q + d_z$q;
                     a_c0$d = a_c0$q + d_c0$q;
                     a_c1$d = a_c1$q + d_c1$q;
@@ -9385,15 +9401,30 @@ module gpu_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp
         xr_neg$x = inp$xr;
         xl_on$a = inp$xl;
         xl_on$b = width_x;
+        dropped = 1'b0;
+        if (clip_x$on & (~xl_on$lt | xr_neg$neg)) begin
+            dropped = 1'b1;
+        end
+        if (clip_z$on & ((zl$neg & zr$neg) | (zl$over & zr$over))) begin
+            dropped = 1'b1;
+        end
+        if (xl_neg$neg & clip_x$on) begin
+            x_first = inp$xr;
+            x_last = 32'h0;
+        end
+        else begin
+            x_first = inp$xl;
+            x_last = inp$xr;
+            if (clip_x$on & (inp$xr >= width_x)) begin
+                x_last = width_x - 32'h1;
+            end
+        end
         if (accept) begin
             busy$d = 1'b1;
-            drop$d = 1'b0;
-            if (clip_x$on & (~xl_on$lt | xr_neg$neg)) begin
-                drop$d = 1'b1;
-            end
-            if (clip_z$on & ((zl$neg & zr$neg) | (zl$over & zr$over))) begin
-                drop$d = 1'b1;
-            end
+            drop$d = dropped;
+            x$d = x_first;
+            last$d = x_last;
+            at_last$d = dropped | (x_first == x_last);
             y$d = inp$y;
             d_z$d = ((inp$ddx_z) & 36'hfffffffff);
             d_c0$d = ((inp$ddx_c0) & 32'hffffffff);
@@ -9401,19 +9432,12 @@ module gpu_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp
             d_c2$d = ((inp$ddx_c2) & 32'hffffffff);
             left$d = xl_neg$neg & clip_x$on;
             if (xl_neg$neg & clip_x$on) begin
-                x$d = inp$xr;
-                last$d = 32'h0;
                 a_z$d = inp$right_z;
                 a_c0$d = inp$right_c0;
                 a_c1$d = inp$right_c1;
                 a_c2$d = inp$right_c2;
             end
             else begin
-                x$d = inp$xl;
-                last$d = inp$xr;
-                if (clip_x$on & (inp$xr >= width_x)) begin
-                    last$d = width_x - 32'h1;
-                end
                 a_z$d = inp$left_z;
                 a_c0$d = inp$left_c0;
                 a_c1$d = inp$left_c1;
@@ -9499,6 +9523,25 @@ module gpu_top$core$span$a_z(d,q,clock);
     end
           
 endmodule // gpu_top$core$span$a_z
+
+
+module gpu_top$core$span$at_last(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$span$at_last
 
 
 module gpu_top$core$span$busy(d,q,clock);

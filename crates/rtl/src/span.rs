@@ -88,6 +88,18 @@ pub struct Span {
     /// The pixel presented and the last one of the walk.
     x: DFF<Bits<PIXEL>>,
     last: DFF<Bits<PIXEL>>,
+    /// The walk is in its last cycle: `drop` or `x == last`, kept as a register (set with
+    /// the command, then from the next pixel's position) so that the handshake with the
+    /// span FIFO does not start with that comparison (raster_top's critical path at stop 61:
+    /// `x` through the comparison and `drop` into the FIFO's head registers, 13.0 ns).
+    at_last: DFF<Bit>,
+    /// The walk's next pixel, `x - 1` walking left, else `x + 1`.
+    x_next: Signal<Local, Bits<PIXEL>>,
+    /// The command's first and last pixels, as `x` and `last` take them.
+    x_first: Signal<Local, Bits<PIXEL>>,
+    x_last: Signal<Local, Bits<PIXEL>>,
+    /// The command is dropped, as `drop` takes it.
+    dropped: Signal<Local, Bit>,
     y: DFF<Bits<SCREEN>>,
     /// Attributes at pixel x.
     a_z: DFF<Bits<Z_ACC>>,
@@ -125,7 +137,6 @@ pub struct Span {
     o_rgb0: DFF<Bits<CHANNEL>>,
     o_rgb1: DFF<Bits<CHANNEL>>,
     o_rgb2: DFF<Bits<CHANNEL>>,
-    at_last: Signal<Local, Bit>,
     advance: Signal<Local, Bit>,
     ready: Signal<Local, Bit>,
     accept: Signal<Local, Bit>,
@@ -135,8 +146,8 @@ impl Logic for Span {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, busy, drop, left, x, last, y, a_z, a_c0, a_c1, a_c2, d_z, d_c0, d_c1, d_c2, o_valid, o_x, o_y,
-            o_z, o_rgb0, o_rgb1, o_rgb2
+            self, clock, busy, drop, left, x, last, at_last, y, a_z, a_c0, a_c1, a_c2, d_z, d_c0, d_c1, d_c2, o_valid,
+            o_x, o_y, o_z, o_rgb0, o_rgb1, o_rgb2
         );
 
         // The walk's pixel: sent or not, its depth and colour.
@@ -184,12 +195,16 @@ impl Logic for Span {
         self.out.rgb2.next = self.o_rgb2.q.val();
         self.idle.next = !self.busy.q.val() & !self.o_valid.q.val();
 
+        self.x_next.next = self.x.q.val() + 1;
+        if self.left.q.val() {
+            self.x_next.next = self.x.q.val() - 1;
+        }
+
         // Handshakes: the walk moves on while the pixel register is empty or its pixel is
         // being taken (whether the walk's pixel is sent or not: that is not on this path);
         // a command is taken when idle or in the walk's last cycle.
-        self.at_last.next = self.drop.q.val() | (self.x.q.val() == self.last.q.val());
         self.advance.next = self.busy.q.val() & (!self.o_valid.q.val() | self.out.ready.val());
-        self.ready.next = !self.busy.q.val() | (self.at_last.val() & self.advance.val());
+        self.ready.next = !self.busy.q.val() | (self.at_last.q.val() & self.advance.val());
         self.inp.ready.next = self.ready.val();
         self.accept.next = self.inp.valid.val() & self.ready.val();
         if self.out.ready.val() {
@@ -203,17 +218,17 @@ impl Logic for Span {
             self.o_rgb0.d.next = self.rgb0.val();
             self.o_rgb1.d.next = self.rgb1.val();
             self.o_rgb2.d.next = self.rgb2.val();
-            if self.at_last.val() {
+            if self.at_last.q.val() {
                 self.busy.d.next = false;
             } else {
+                self.x.d.next = self.x_next.val();
+                self.at_last.d.next = self.x_next.val() == self.last.q.val();
                 if self.left.q.val() {
-                    self.x.d.next = self.x.q.val() - 1;
                     self.a_z.d.next = self.a_z.q.val() - self.d_z.q.val();
                     self.a_c0.d.next = self.a_c0.q.val() - self.d_c0.q.val();
                     self.a_c1.d.next = self.a_c1.q.val() - self.d_c1.q.val();
                     self.a_c2.d.next = self.a_c2.q.val() - self.d_c2.q.val();
                 } else {
-                    self.x.d.next = self.x.q.val() + 1;
                     self.a_z.d.next = self.a_z.q.val() + self.d_z.q.val();
                     self.a_c0.d.next = self.a_c0.q.val() + self.d_c0.q.val();
                     self.a_c1.d.next = self.a_c1.q.val() + self.d_c1.q.val();
@@ -230,17 +245,30 @@ impl Logic for Span {
         self.xr_neg.x.next = self.inp.xr.val();
         self.xl_on.a.next = self.inp.xl.val();
         self.xl_on.b.next = self.width_x.val();
+        self.dropped.next = false;
+        if self.clip_x.on.val() & (!self.xl_on.lt.val() | self.xr_neg.neg.val()) {
+            self.dropped.next = true;
+        }
+        if self.clip_z.on.val() & ((self.zl.neg.val() & self.zr.neg.val()) | (self.zl.over.val() & self.zr.over.val()))
+        {
+            self.dropped.next = true;
+        }
+        if self.xl_neg.neg.val() & self.clip_x.on.val() {
+            self.x_first.next = self.inp.xr.val();
+            self.x_last.next = 0.into();
+        } else {
+            self.x_first.next = self.inp.xl.val();
+            self.x_last.next = self.inp.xr.val();
+            if self.clip_x.on.val() & (self.inp.xr.val() >= self.width_x.val()) {
+                self.x_last.next = self.width_x.val() - 1;
+            }
+        }
         if self.accept.val() {
             self.busy.d.next = true;
-            self.drop.d.next = false;
-            if self.clip_x.on.val() & (!self.xl_on.lt.val() | self.xr_neg.neg.val()) {
-                self.drop.d.next = true;
-            }
-            if self.clip_z.on.val()
-                & ((self.zl.neg.val() & self.zr.neg.val()) | (self.zl.over.val() & self.zr.over.val()))
-            {
-                self.drop.d.next = true;
-            }
+            self.drop.d.next = self.dropped.val();
+            self.x.d.next = self.x_first.val();
+            self.last.d.next = self.x_last.val();
+            self.at_last.d.next = self.dropped.val() | (self.x_first.val() == self.x_last.val());
             self.y.d.next = self.inp.y.val();
             self.d_z.d.next = bit_cast::<Z_ACC, DZ>(self.inp.ddx_z.val());
             self.d_c0.d.next = bit_cast::<C_ACC, DC>(self.inp.ddx_c0.val());
@@ -248,18 +276,11 @@ impl Logic for Span {
             self.d_c2.d.next = bit_cast::<C_ACC, DC>(self.inp.ddx_c2.val());
             self.left.d.next = self.xl_neg.neg.val() & self.clip_x.on.val();
             if self.xl_neg.neg.val() & self.clip_x.on.val() {
-                self.x.d.next = self.inp.xr.val();
-                self.last.d.next = 0.into();
                 self.a_z.d.next = self.inp.right_z.val();
                 self.a_c0.d.next = self.inp.right_c0.val();
                 self.a_c1.d.next = self.inp.right_c1.val();
                 self.a_c2.d.next = self.inp.right_c2.val();
             } else {
-                self.x.d.next = self.inp.xl.val();
-                self.last.d.next = self.inp.xr.val();
-                if self.clip_x.on.val() & (self.inp.xr.val() >= self.width_x.val()) {
-                    self.last.d.next = self.width_x.val() - 1;
-                }
                 self.a_z.d.next = self.inp.left_z.val();
                 self.a_c0.d.next = self.inp.left_c0.val();
                 self.a_c1.d.next = self.inp.left_c1.val();
