@@ -5348,14 +5348,22 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
     output reg  [35:0] out$ddx_c2;
     output reg  empty;
     
+    // Constant declarations
+    localparam  depth = 3'b100;
+    
     // Stub signals
     reg  [2:0] count$d;
     wire  [2:0] count$q;
     reg  count$clock;
-    reg  [2:0] level$count;
-    wire  level$full;
-    wire  level$empty;
-    wire  level$one;
+    reg  full$d;
+    wire  full$q;
+    reg  full$clock;
+    reg  held$d;
+    wire  held$q;
+    reg  held$clock;
+    reg  one$d;
+    wire  one$q;
+    reg  one$clock;
     reg  [1:0] wr$d;
     wire  [1:0] wr$q;
     reg  wr$clock;
@@ -5484,6 +5492,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
     wire  [35:0] ddx_c2$head;
     
     // Local signals
+    reg  [2:0] count_next;
     reg  we;
     reg  push;
     reg  pop;
@@ -5496,11 +5505,20 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         .q(count$q),
         .clock(count$clock)
     );
-    gpu_top$core$fifo$level level(
-        .count(level$count),
-        .full(level$full),
-        .empty(level$empty),
-        .one(level$one)
+    gpu_top$core$fifo$full full(
+        .d(full$d),
+        .q(full$q),
+        .clock(full$clock)
+    );
+    gpu_top$core$fifo$held held(
+        .d(held$d),
+        .q(held$q),
+        .clock(held$clock)
+    );
+    gpu_top$core$fifo$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
     );
     gpu_top$core$fifo$wr wr(
         .d(wr$d),
@@ -5666,32 +5684,42 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
     // Update code
     always @(*) begin
         count$clock = clock;
+        full$clock = clock;
+        held$clock = clock;
+        one$clock = clock;
         wr$clock = clock;
         rd$clock = clock;
         count$d = count$q;
+        full$d = full$q;
+        held$d = held$q;
+        one$d = one$q;
         wr$d = wr$q;
         rd$d = rd$q;
-        level$count = count$q;
-        inp$ready = ~level$full;
-        out$valid = ~level$empty | inp$valid;
-        empty = level$empty;
-        we = inp$valid & ~level$full;
-        push = we & ~(level$empty & out$ready);
-        pop = ~level$empty & out$ready;
-        take_din = level$empty | (level$one & out$ready);
-        take_next = pop & ~level$one;
+        inp$ready = ~full$q;
+        out$valid = held$q | inp$valid;
+        empty = ~held$q;
+        we = inp$valid & ~full$q;
+        push = we & ~(~held$q & out$ready);
+        pop = held$q & out$ready;
+        take_din = ~held$q | (one$q & out$ready);
+        take_next = pop & ~one$q;
         if (push) begin
             wr$d = wr$q + 32'h1;
         end
         if (pop) begin
             rd$d = rd$q + 32'h1;
         end
+        count_next = count$q;
         if (push & ~pop) begin
-            count$d = count$q + 32'h1;
+            count_next = count$q + 32'h1;
         end
         if (pop & ~push) begin
-            count$d = count$q - 32'h1;
+            count_next = count$q - 32'h1;
         end
+        count$d = count_next;
+        full$d = count_next == depth;
+        held$d = count_next != 32'h0;
+        one$d = count_next == 32'h1;
         y$clock = clock;
         y$we = we;
         y$wr = wr$q;
@@ -5700,7 +5728,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         y$take_next = take_next;
         y$din = inp$y;
         out$y = y$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$y = inp$y;
         end
         xl$clock = clock;
@@ -5711,7 +5739,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         xl$take_next = take_next;
         xl$din = inp$xl;
         out$xl = xl$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$xl = inp$xl;
         end
         xr$clock = clock;
@@ -5722,7 +5750,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         xr$take_next = take_next;
         xr$din = inp$xr;
         out$xr = xr$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$xr = inp$xr;
         end
         left_z$clock = clock;
@@ -5733,7 +5761,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         left_z$take_next = take_next;
         left_z$din = inp$left_z;
         out$left_z = left_z$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$left_z = inp$left_z;
         end
         left_c0$clock = clock;
@@ -5744,7 +5772,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         left_c0$take_next = take_next;
         left_c0$din = inp$left_c0;
         out$left_c0 = left_c0$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$left_c0 = inp$left_c0;
         end
         left_c1$clock = clock;
@@ -5755,7 +5783,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         left_c1$take_next = take_next;
         left_c1$din = inp$left_c1;
         out$left_c1 = left_c1$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$left_c1 = inp$left_c1;
         end
         left_c2$clock = clock;
@@ -5766,7 +5794,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         left_c2$take_next = take_next;
         left_c2$din = inp$left_c2;
         out$left_c2 = left_c2$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$left_c2 = inp$left_c2;
         end
         right_z$clock = clock;
@@ -5777,7 +5805,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         right_z$take_next = take_next;
         right_z$din = inp$right_z;
         out$right_z = right_z$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$right_z = inp$right_z;
         end
         right_c0$clock = clock;
@@ -5788,7 +5816,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         right_c0$take_next = take_next;
         right_c0$din = inp$right_c0;
         out$right_c0 = right_c0$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$right_c0 = inp$right_c0;
         end
         right_c1$clock = clock;
@@ -5799,7 +5827,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         right_c1$take_next = take_next;
         right_c1$din = inp$right_c1;
         out$right_c1 = right_c1$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$right_c1 = inp$right_c1;
         end
         right_c2$clock = clock;
@@ -5810,7 +5838,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         right_c2$take_next = take_next;
         right_c2$din = inp$right_c2;
         out$right_c2 = right_c2$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$right_c2 = inp$right_c2;
         end
         ddx_z$clock = clock;
@@ -5821,7 +5849,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         ddx_z$take_next = take_next;
         ddx_z$din = inp$ddx_z;
         out$ddx_z = ddx_z$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$ddx_z = inp$ddx_z;
         end
         ddx_c0$clock = clock;
@@ -5832,7 +5860,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         ddx_c0$take_next = take_next;
         ddx_c0$din = inp$ddx_c0;
         out$ddx_c0 = ddx_c0$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$ddx_c0 = inp$ddx_c0;
         end
         ddx_c1$clock = clock;
@@ -5843,7 +5871,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         ddx_c1$take_next = take_next;
         ddx_c1$din = inp$ddx_c1;
         out$ddx_c1 = ddx_c1$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$ddx_c1 = inp$ddx_c1;
         end
         ddx_c2$clock = clock;
@@ -5854,7 +5882,7 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         ddx_c2$take_next = take_next;
         ddx_c2$din = inp$ddx_c2;
         out$ddx_c2 = ddx_c2$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$ddx_c2 = inp$ddx_c2;
         end
     end
@@ -6681,6 +6709,44 @@ module gpu_top$core$fifo$ddx_z$h(d,q,clock);
 endmodule // gpu_top$core$fifo$ddx_z$h
 
 
+module gpu_top$core$fifo$full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$full
+
+
+module gpu_top$core$fifo$held(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$held
+
+
 module gpu_top$core$fifo$left_c0(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
@@ -7481,25 +7547,23 @@ module gpu_top$core$fifo$left_z$h(d,q,clock);
 endmodule // gpu_top$core$fifo$left_z$h
 
 
-module gpu_top$core$fifo$level(count,full,empty,one);
+module gpu_top$core$fifo$one(d,q,clock);
     
     // Module arguments
-    input wire  [2:0] count;
-    output reg  full;
-    output reg  empty;
-    output reg  one;
+    input wire  d;
+    output reg  q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  depth = 3'b100;
-    
-    // Update code
-    always @(*) begin
-        full = count == depth;
-        empty = count == 32'h0;
-        one = count == 32'h1;
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
     end
     
-endmodule // gpu_top$core$fifo$level
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // gpu_top$core$fifo$one
 
 
 module gpu_top$core$fifo$rd(d,q,clock);
@@ -9094,7 +9158,11 @@ module gpu_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp
     reg  [12:0] x_next;
     reg  [12:0] x_first;
     reg  [12:0] x_last;
+    reg  one_pixel;
+    reg  xr_off;
+    reg  [12:0] last_column;
     reg  dropped;
+    reg  ends;
     reg  [12:0] width_x;
     reg  valid;
     reg  [7:0] rgb0;
@@ -9361,7 +9429,8 @@ module gpu_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp
             x_next = x$q - 32'h1;
         end
         advance = busy$q & (~o_valid$q | out$ready);
-        ready = ~busy$q | (at_last$q & advance);
+        ends = drop$q | at_last$q;
+        ready = ~busy$q | (ends & advance);
         inp$ready = ready;
         accept = inp$valid & ready;
         if (out$ready) begin
@@ -9375,7 +9444,7 @@ module gpu_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp
             o_rgb0$d = rgb0;
             o_rgb1$d = rgb1;
             o_rgb2$d = rgb2;
-            if (at_last$q) begin
+            if (ends) begin
                 busy$d = 1'b0;
             end
             else begin
@@ -9408,15 +9477,20 @@ module gpu_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp
         if (clip_z$on & ((zl$neg & zr$neg) | (zl$over & zr$over))) begin
             dropped = 1'b1;
         end
+        last_column = width_x - 32'h1;
+        xr_off = clip_x$on & (inp$xr >= width_x);
         if (xl_neg$neg & clip_x$on) begin
             x_first = inp$xr;
             x_last = 32'h0;
+            one_pixel = inp$xr == 32'h0;
         end
         else begin
             x_first = inp$xl;
             x_last = inp$xr;
-            if (clip_x$on & (inp$xr >= width_x)) begin
-                x_last = width_x - 32'h1;
+            one_pixel = inp$xl == inp$xr;
+            if (xr_off) begin
+                x_last = last_column;
+                one_pixel = inp$xl == last_column;
             end
         end
         if (accept) begin
@@ -9424,7 +9498,7 @@ module gpu_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp
             drop$d = dropped;
             x$d = x_first;
             last$d = x_last;
-            at_last$d = dropped | (x_first == x_last);
+            at_last$d = one_pixel;
             y$d = inp$y;
             d_z$d = ((inp$ddx_z) & 36'hfffffffff);
             d_c0$d = ((inp$ddx_c0) & 32'hffffffff);

@@ -4853,14 +4853,22 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
     output reg  [35:0] out$ddx_c2;
     output reg  empty;
     
+    // Constant declarations
+    localparam  depth = 3'b100;
+    
     // Stub signals
     reg  [2:0] count$d;
     wire  [2:0] count$q;
     reg  count$clock;
-    reg  [2:0] level$count;
-    wire  level$full;
-    wire  level$empty;
-    wire  level$one;
+    reg  full$d;
+    wire  full$q;
+    reg  full$clock;
+    reg  held$d;
+    wire  held$q;
+    reg  held$clock;
+    reg  one$d;
+    wire  one$q;
+    reg  one$clock;
     reg  [1:0] wr$d;
     wire  [1:0] wr$q;
     reg  wr$clock;
@@ -4989,6 +4997,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
     wire  [35:0] ddx_c2$head;
     
     // Local signals
+    reg  [2:0] count_next;
     reg  we;
     reg  push;
     reg  pop;
@@ -5001,11 +5010,20 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         .q(count$q),
         .clock(count$clock)
     );
-    raster_top$fragments$core$fifo$level level(
-        .count(level$count),
-        .full(level$full),
-        .empty(level$empty),
-        .one(level$one)
+    raster_top$fragments$core$fifo$full full(
+        .d(full$d),
+        .q(full$q),
+        .clock(full$clock)
+    );
+    raster_top$fragments$core$fifo$held held(
+        .d(held$d),
+        .q(held$q),
+        .clock(held$clock)
+    );
+    raster_top$fragments$core$fifo$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
     );
     raster_top$fragments$core$fifo$wr wr(
         .d(wr$d),
@@ -5171,32 +5189,42 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
     // Update code
     always @(*) begin
         count$clock = clock;
+        full$clock = clock;
+        held$clock = clock;
+        one$clock = clock;
         wr$clock = clock;
         rd$clock = clock;
         count$d = count$q;
+        full$d = full$q;
+        held$d = held$q;
+        one$d = one$q;
         wr$d = wr$q;
         rd$d = rd$q;
-        level$count = count$q;
-        inp$ready = ~level$full;
-        out$valid = ~level$empty | inp$valid;
-        empty = level$empty;
-        we = inp$valid & ~level$full;
-        push = we & ~(level$empty & out$ready);
-        pop = ~level$empty & out$ready;
-        take_din = level$empty | (level$one & out$ready);
-        take_next = pop & ~level$one;
+        inp$ready = ~full$q;
+        out$valid = held$q | inp$valid;
+        empty = ~held$q;
+        we = inp$valid & ~full$q;
+        push = we & ~(~held$q & out$ready);
+        pop = held$q & out$ready;
+        take_din = ~held$q | (one$q & out$ready);
+        take_next = pop & ~one$q;
         if (push) begin
             wr$d = wr$q + 32'h1;
         end
         if (pop) begin
             rd$d = rd$q + 32'h1;
         end
+        count_next = count$q;
         if (push & ~pop) begin
-            count$d = count$q + 32'h1;
+            count_next = count$q + 32'h1;
         end
         if (pop & ~push) begin
-            count$d = count$q - 32'h1;
+            count_next = count$q - 32'h1;
         end
+        count$d = count_next;
+        full$d = count_next == depth;
+        held$d = count_next != 32'h0;
+        one$d = count_next == 32'h1;
         y$clock = clock;
         y$we = we;
         y$wr = wr$q;
@@ -5205,7 +5233,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         y$take_next = take_next;
         y$din = inp$y;
         out$y = y$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$y = inp$y;
         end
         xl$clock = clock;
@@ -5216,7 +5244,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         xl$take_next = take_next;
         xl$din = inp$xl;
         out$xl = xl$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$xl = inp$xl;
         end
         xr$clock = clock;
@@ -5227,7 +5255,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         xr$take_next = take_next;
         xr$din = inp$xr;
         out$xr = xr$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$xr = inp$xr;
         end
         left_z$clock = clock;
@@ -5238,7 +5266,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         left_z$take_next = take_next;
         left_z$din = inp$left_z;
         out$left_z = left_z$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$left_z = inp$left_z;
         end
         left_c0$clock = clock;
@@ -5249,7 +5277,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         left_c0$take_next = take_next;
         left_c0$din = inp$left_c0;
         out$left_c0 = left_c0$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$left_c0 = inp$left_c0;
         end
         left_c1$clock = clock;
@@ -5260,7 +5288,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         left_c1$take_next = take_next;
         left_c1$din = inp$left_c1;
         out$left_c1 = left_c1$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$left_c1 = inp$left_c1;
         end
         left_c2$clock = clock;
@@ -5271,7 +5299,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         left_c2$take_next = take_next;
         left_c2$din = inp$left_c2;
         out$left_c2 = left_c2$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$left_c2 = inp$left_c2;
         end
         right_z$clock = clock;
@@ -5282,7 +5310,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         right_z$take_next = take_next;
         right_z$din = inp$right_z;
         out$right_z = right_z$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$right_z = inp$right_z;
         end
         right_c0$clock = clock;
@@ -5293,7 +5321,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         right_c0$take_next = take_next;
         right_c0$din = inp$right_c0;
         out$right_c0 = right_c0$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$right_c0 = inp$right_c0;
         end
         right_c1$clock = clock;
@@ -5304,7 +5332,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         right_c1$take_next = take_next;
         right_c1$din = inp$right_c1;
         out$right_c1 = right_c1$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$right_c1 = inp$right_c1;
         end
         right_c2$clock = clock;
@@ -5315,7 +5343,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         right_c2$take_next = take_next;
         right_c2$din = inp$right_c2;
         out$right_c2 = right_c2$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$right_c2 = inp$right_c2;
         end
         ddx_z$clock = clock;
@@ -5326,7 +5354,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         ddx_z$take_next = take_next;
         ddx_z$din = inp$ddx_z;
         out$ddx_z = ddx_z$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$ddx_z = inp$ddx_z;
         end
         ddx_c0$clock = clock;
@@ -5337,7 +5365,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         ddx_c0$take_next = take_next;
         ddx_c0$din = inp$ddx_c0;
         out$ddx_c0 = ddx_c0$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$ddx_c0 = inp$ddx_c0;
         end
         ddx_c1$clock = clock;
@@ -5348,7 +5376,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         ddx_c1$take_next = take_next;
         ddx_c1$din = inp$ddx_c1;
         out$ddx_c1 = ddx_c1$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$ddx_c1 = inp$ddx_c1;
         end
         ddx_c2$clock = clock;
@@ -5359,7 +5387,7 @@ module raster_top$fragments$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp
         ddx_c2$take_next = take_next;
         ddx_c2$din = inp$ddx_c2;
         out$ddx_c2 = ddx_c2$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$ddx_c2 = inp$ddx_c2;
         end
     end
@@ -6186,6 +6214,44 @@ module raster_top$fragments$core$fifo$ddx_z$h(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$ddx_z$h
 
 
+module raster_top$fragments$core$fifo$full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$full
+
+
+module raster_top$fragments$core$fifo$held(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$held
+
+
 module raster_top$fragments$core$fifo$left_c0(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
@@ -6986,25 +7052,23 @@ module raster_top$fragments$core$fifo$left_z$h(d,q,clock);
 endmodule // raster_top$fragments$core$fifo$left_z$h
 
 
-module raster_top$fragments$core$fifo$level(count,full,empty,one);
+module raster_top$fragments$core$fifo$one(d,q,clock);
     
     // Module arguments
-    input wire  [2:0] count;
-    output reg  full;
-    output reg  empty;
-    output reg  one;
+    input wire  d;
+    output reg  q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  depth = 3'b100;
-    
-    // Update code
-    always @(*) begin
-        full = count == depth;
-        empty = count == 32'h0;
-        one = count == 32'h1;
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
     end
     
-endmodule // raster_top$fragments$core$fifo$level
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$fragments$core$fifo$one
 
 
 module raster_top$fragments$core$fifo$rd(d,q,clock);
@@ -8599,7 +8663,11 @@ module raster_top$fragments$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$
     reg  [12:0] x_next;
     reg  [12:0] x_first;
     reg  [12:0] x_last;
+    reg  one_pixel;
+    reg  xr_off;
+    reg  [12:0] last_column;
     reg  dropped;
+    reg  ends;
     reg  [12:0] width_x;
     reg  valid;
     reg  [7:0] rgb0;
@@ -8866,7 +8934,8 @@ module raster_top$fragments$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$
             x_next = x$q - 32'h1;
         end
         advance = busy$q & (~o_valid$q | out$ready);
-        ready = ~busy$q | (at_last$q & advance);
+        ends = drop$q | at_last$q;
+        ready = ~busy$q | (ends & advance);
         inp$ready = ready;
         accept = inp$valid & ready;
         if (out$ready) begin
@@ -8880,7 +8949,7 @@ module raster_top$fragments$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$
             o_rgb0$d = rgb0;
             o_rgb1$d = rgb1;
             o_rgb2$d = rgb2;
-            if (at_last$q) begin
+            if (ends) begin
                 busy$d = 1'b0;
             end
             else begin
@@ -8913,15 +8982,20 @@ module raster_top$fragments$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$
         if (clip_z$on & ((zl$neg & zr$neg) | (zl$over & zr$over))) begin
             dropped = 1'b1;
         end
+        last_column = width_x - 32'h1;
+        xr_off = clip_x$on & (inp$xr >= width_x);
         if (xl_neg$neg & clip_x$on) begin
             x_first = inp$xr;
             x_last = 32'h0;
+            one_pixel = inp$xr == 32'h0;
         end
         else begin
             x_first = inp$xl;
             x_last = inp$xr;
-            if (clip_x$on & (inp$xr >= width_x)) begin
-                x_last = width_x - 32'h1;
+            one_pixel = inp$xl == inp$xr;
+            if (xr_off) begin
+                x_last = last_column;
+                one_pixel = inp$xl == last_column;
             end
         end
         if (accept) begin
@@ -8929,7 +9003,7 @@ module raster_top$fragments$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$
             drop$d = dropped;
             x$d = x_first;
             last$d = x_last;
-            at_last$d = dropped | (x_first == x_last);
+            at_last$d = one_pixel;
             y$d = inp$y;
             d_z$d = ((inp$ddx_z) & 36'hfffffffff);
             d_c0$d = ((inp$ddx_c0) & 32'hffffffff);

@@ -135,7 +135,11 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
     reg  [12:0] x_next;
     reg  [12:0] x_first;
     reg  [12:0] x_last;
+    reg  one_pixel;
+    reg  xr_off;
+    reg  [12:0] last_column;
     reg  dropped;
+    reg  ends;
     reg  [12:0] width_x;
     reg  valid;
     reg  [7:0] rgb0;
@@ -402,7 +406,8 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
             x_next = x$q - 32'h1;
         end
         advance = busy$q & (~o_valid$q | out$ready);
-        ready = ~busy$q | (at_last$q & advance);
+        ends = drop$q | at_last$q;
+        ready = ~busy$q | (ends & advance);
         inp$ready = ready;
         accept = inp$valid & ready;
         if (out$ready) begin
@@ -416,7 +421,7 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
             o_rgb0$d = rgb0;
             o_rgb1$d = rgb1;
             o_rgb2$d = rgb2;
-            if (at_last$q) begin
+            if (ends) begin
                 busy$d = 1'b0;
             end
             else begin
@@ -449,15 +454,20 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
         if (clip_z$on & ((zl$neg & zr$neg) | (zl$over & zr$over))) begin
             dropped = 1'b1;
         end
+        last_column = width_x - 32'h1;
+        xr_off = clip_x$on & (inp$xr >= width_x);
         if (xl_neg$neg & clip_x$on) begin
             x_first = inp$xr;
             x_last = 32'h0;
+            one_pixel = inp$xr == 32'h0;
         end
         else begin
             x_first = inp$xl;
             x_last = inp$xr;
-            if (clip_x$on & (inp$xr >= width_x)) begin
-                x_last = width_x - 32'h1;
+            one_pixel = inp$xl == inp$xr;
+            if (xr_off) begin
+                x_last = last_column;
+                one_pixel = inp$xl == last_column;
             end
         end
         if (accept) begin
@@ -465,7 +475,7 @@ module span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_z,inp$l
             drop$d = dropped;
             x$d = x_first;
             last$d = x_last;
-            at_last$d = dropped | (x_first == x_last);
+            at_last$d = one_pixel;
             y$d = inp$y;
             d_z$d = ((inp$ddx_z) & 36'hfffffffff);
             d_c0$d = ((inp$ddx_c0) & 32'hffffffff);

@@ -5350,14 +5350,22 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
     output reg  [35:0] out$ddx_c2;
     output reg  empty;
     
+    // Constant declarations
+    localparam  depth = 3'b100;
+    
     // Stub signals
     reg  [2:0] count$d;
     wire  [2:0] count$q;
     reg  count$clock;
-    reg  [2:0] level$count;
-    wire  level$full;
-    wire  level$empty;
-    wire  level$one;
+    reg  full$d;
+    wire  full$q;
+    reg  full$clock;
+    reg  held$d;
+    wire  held$q;
+    reg  held$clock;
+    reg  one$d;
+    wire  one$q;
+    reg  one$clock;
     reg  [1:0] wr$d;
     wire  [1:0] wr$q;
     reg  wr$clock;
@@ -5486,6 +5494,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
     wire  [35:0] ddx_c2$head;
     
     // Local signals
+    reg  [2:0] count_next;
     reg  we;
     reg  push;
     reg  pop;
@@ -5498,11 +5507,20 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         .q(count$q),
         .clock(count$clock)
     );
-    raster_top$core$fifo$level level(
-        .count(level$count),
-        .full(level$full),
-        .empty(level$empty),
-        .one(level$one)
+    raster_top$core$fifo$full full(
+        .d(full$d),
+        .q(full$q),
+        .clock(full$clock)
+    );
+    raster_top$core$fifo$held held(
+        .d(held$d),
+        .q(held$q),
+        .clock(held$clock)
+    );
+    raster_top$core$fifo$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
     );
     raster_top$core$fifo$wr wr(
         .d(wr$d),
@@ -5668,32 +5686,42 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
     // Update code
     always @(*) begin
         count$clock = clock;
+        full$clock = clock;
+        held$clock = clock;
+        one$clock = clock;
         wr$clock = clock;
         rd$clock = clock;
         count$d = count$q;
+        full$d = full$q;
+        held$d = held$q;
+        one$d = one$q;
         wr$d = wr$q;
         rd$d = rd$q;
-        level$count = count$q;
-        inp$ready = ~level$full;
-        out$valid = ~level$empty | inp$valid;
-        empty = level$empty;
-        we = inp$valid & ~level$full;
-        push = we & ~(level$empty & out$ready);
-        pop = ~level$empty & out$ready;
-        take_din = level$empty | (level$one & out$ready);
-        take_next = pop & ~level$one;
+        inp$ready = ~full$q;
+        out$valid = held$q | inp$valid;
+        empty = ~held$q;
+        we = inp$valid & ~full$q;
+        push = we & ~(~held$q & out$ready);
+        pop = held$q & out$ready;
+        take_din = ~held$q | (one$q & out$ready);
+        take_next = pop & ~one$q;
         if (push) begin
             wr$d = wr$q + 32'h1;
         end
         if (pop) begin
             rd$d = rd$q + 32'h1;
         end
+        count_next = count$q;
         if (push & ~pop) begin
-            count$d = count$q + 32'h1;
+            count_next = count$q + 32'h1;
         end
         if (pop & ~push) begin
-            count$d = count$q - 32'h1;
+            count_next = count$q - 32'h1;
         end
+        count$d = count_next;
+        full$d = count_next == depth;
+        held$d = count_next != 32'h0;
+        one$d = count_next == 32'h1;
         y$clock = clock;
         y$we = we;
         y$wr = wr$q;
@@ -5702,7 +5730,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         y$take_next = take_next;
         y$din = inp$y;
         out$y = y$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$y = inp$y;
         end
         xl$clock = clock;
@@ -5713,7 +5741,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         xl$take_next = take_next;
         xl$din = inp$xl;
         out$xl = xl$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$xl = inp$xl;
         end
         xr$clock = clock;
@@ -5724,7 +5752,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         xr$take_next = take_next;
         xr$din = inp$xr;
         out$xr = xr$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$xr = inp$xr;
         end
         left_z$clock = clock;
@@ -5735,7 +5763,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         left_z$take_next = take_next;
         left_z$din = inp$left_z;
         out$left_z = left_z$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$left_z = inp$left_z;
         end
         left_c0$clock = clock;
@@ -5746,7 +5774,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         left_c0$take_next = take_next;
         left_c0$din = inp$left_c0;
         out$left_c0 = left_c0$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$left_c0 = inp$left_c0;
         end
         left_c1$clock = clock;
@@ -5757,7 +5785,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         left_c1$take_next = take_next;
         left_c1$din = inp$left_c1;
         out$left_c1 = left_c1$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$left_c1 = inp$left_c1;
         end
         left_c2$clock = clock;
@@ -5768,7 +5796,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         left_c2$take_next = take_next;
         left_c2$din = inp$left_c2;
         out$left_c2 = left_c2$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$left_c2 = inp$left_c2;
         end
         right_z$clock = clock;
@@ -5779,7 +5807,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         right_z$take_next = take_next;
         right_z$din = inp$right_z;
         out$right_z = right_z$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$right_z = inp$right_z;
         end
         right_c0$clock = clock;
@@ -5790,7 +5818,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         right_c0$take_next = take_next;
         right_c0$din = inp$right_c0;
         out$right_c0 = right_c0$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$right_c0 = inp$right_c0;
         end
         right_c1$clock = clock;
@@ -5801,7 +5829,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         right_c1$take_next = take_next;
         right_c1$din = inp$right_c1;
         out$right_c1 = right_c1$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$right_c1 = inp$right_c1;
         end
         right_c2$clock = clock;
@@ -5812,7 +5840,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         right_c2$take_next = take_next;
         right_c2$din = inp$right_c2;
         out$right_c2 = right_c2$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$right_c2 = inp$right_c2;
         end
         ddx_z$clock = clock;
@@ -5823,7 +5851,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         ddx_z$take_next = take_next;
         ddx_z$din = inp$ddx_z;
         out$ddx_z = ddx_z$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$ddx_z = inp$ddx_z;
         end
         ddx_c0$clock = clock;
@@ -5834,7 +5862,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         ddx_c0$take_next = take_next;
         ddx_c0$din = inp$ddx_c0;
         out$ddx_c0 = ddx_c0$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$ddx_c0 = inp$ddx_c0;
         end
         ddx_c1$clock = clock;
@@ -5845,7 +5873,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         ddx_c1$take_next = take_next;
         ddx_c1$din = inp$ddx_c1;
         out$ddx_c1 = ddx_c1$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$ddx_c1 = inp$ddx_c1;
         end
         ddx_c2$clock = clock;
@@ -5856,7 +5884,7 @@ module raster_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$le
         ddx_c2$take_next = take_next;
         ddx_c2$din = inp$ddx_c2;
         out$ddx_c2 = ddx_c2$head;
-        if (level$empty) begin
+        if (~held$q) begin
             out$ddx_c2 = inp$ddx_c2;
         end
     end
@@ -6683,6 +6711,44 @@ module raster_top$core$fifo$ddx_z$h(d,q,clock);
 endmodule // raster_top$core$fifo$ddx_z$h
 
 
+module raster_top$core$fifo$full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$full
+
+
+module raster_top$core$fifo$held(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$held
+
+
 module raster_top$core$fifo$left_c0(clock,we,wr,rd,take_din,take_next,din,head);
     
     // Module arguments
@@ -7483,25 +7549,23 @@ module raster_top$core$fifo$left_z$h(d,q,clock);
 endmodule // raster_top$core$fifo$left_z$h
 
 
-module raster_top$core$fifo$level(count,full,empty,one);
+module raster_top$core$fifo$one(d,q,clock);
     
     // Module arguments
-    input wire  [2:0] count;
-    output reg  full;
-    output reg  empty;
-    output reg  one;
+    input wire  d;
+    output reg  q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  depth = 3'b100;
-    
-    // Update code
-    always @(*) begin
-        full = count == depth;
-        empty = count == 32'h0;
-        one = count == 32'h1;
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
     end
     
-endmodule // raster_top$core$fifo$level
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // raster_top$core$fifo$one
 
 
 module raster_top$core$fifo$rd(d,q,clock);
@@ -9096,7 +9160,11 @@ module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
     reg  [12:0] x_next;
     reg  [12:0] x_first;
     reg  [12:0] x_last;
+    reg  one_pixel;
+    reg  xr_off;
+    reg  [12:0] last_column;
     reg  dropped;
+    reg  ends;
     reg  [12:0] width_x;
     reg  valid;
     reg  [7:0] rgb0;
@@ -9363,7 +9431,8 @@ module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
             x_next = x$q - 32'h1;
         end
         advance = busy$q & (~o_valid$q | out$ready);
-        ready = ~busy$q | (at_last$q & advance);
+        ends = drop$q | at_last$q;
+        ready = ~busy$q | (ends & advance);
         inp$ready = ready;
         accept = inp$valid & ready;
         if (out$ready) begin
@@ -9377,7 +9446,7 @@ module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
             o_rgb0$d = rgb0;
             o_rgb1$d = rgb1;
             o_rgb2$d = rgb2;
-            if (at_last$q) begin
+            if (ends) begin
                 busy$d = 1'b0;
             end
             else begin
@@ -9410,15 +9479,20 @@ module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
         if (clip_z$on & ((zl$neg & zr$neg) | (zl$over & zr$over))) begin
             dropped = 1'b1;
         end
+        last_column = width_x - 32'h1;
+        xr_off = clip_x$on & (inp$xr >= width_x);
         if (xl_neg$neg & clip_x$on) begin
             x_first = inp$xr;
             x_last = 32'h0;
+            one_pixel = inp$xr == 32'h0;
         end
         else begin
             x_first = inp$xl;
             x_last = inp$xr;
-            if (clip_x$on & (inp$xr >= width_x)) begin
-                x_last = width_x - 32'h1;
+            one_pixel = inp$xl == inp$xr;
+            if (xr_off) begin
+                x_last = last_column;
+                one_pixel = inp$xl == last_column;
             end
         end
         if (accept) begin
@@ -9426,7 +9500,7 @@ module raster_top$core$span(clock,width,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,
             drop$d = dropped;
             x$d = x_first;
             last$d = x_last;
-            at_last$d = dropped | (x_first == x_last);
+            at_last$d = one_pixel;
             y$d = inp$y;
             d_z$d = ((inp$ddx_z) & 36'hfffffffff);
             d_c0$d = ((inp$ddx_c0) & 32'hffffffff);

@@ -88,18 +88,29 @@ pub struct Span {
     /// The pixel presented and the last one of the walk.
     x: DFF<Bits<PIXEL>>,
     last: DFF<Bits<PIXEL>>,
-    /// The walk is in its last cycle: `drop` or `x == last`, kept as a register (set with
-    /// the command, then from the next pixel's position) so that the handshake with the
-    /// span FIFO does not start with that comparison (raster_top's critical path at stop 61:
-    /// `x` through the comparison and `drop` into the FIFO's head registers, 13.0 ns).
+    /// `x == last`, kept as a register (set with the command, then from the next pixel's
+    /// position) so that the handshake with the span FIFO does not start with that
+    /// comparison (raster_top's critical path at stop 61: `x` through the comparison and
+    /// `drop` into the FIFO's head registers, 13.0 ns). The walk's last cycle is `drop` or
+    /// this.
     at_last: DFF<Bit>,
     /// The walk's next pixel, `x - 1` walking left, else `x + 1`.
     x_next: Signal<Local, Bits<PIXEL>>,
-    /// The command's first and last pixels, as `x` and `last` take them.
+    /// The command's first and last pixels, as `x` and `last` take them, and whether they
+    /// are one: `xr == 0` walking left; walking right `xl == xr` with xr on the screen, or
+    /// `xl == W - 1` with it beyond (side by side rather than comparing the two
+    /// multiplexers' outputs: raster_top's critical path at stop 62 ran through them,
+    /// 12.5 ns).
     x_first: Signal<Local, Bits<PIXEL>>,
     x_last: Signal<Local, Bits<PIXEL>>,
+    one_pixel: Signal<Local, Bit>,
+    /// xr beyond the screen's last column (with X clipping), and that column, W - 1.
+    xr_off: Signal<Local, Bit>,
+    last_column: Signal<Local, Bits<PIXEL>>,
     /// The command is dropped, as `drop` takes it.
     dropped: Signal<Local, Bit>,
+    /// The walk's last cycle: `drop` or `at_last`.
+    ends: Signal<Local, Bit>,
     y: DFF<Bits<SCREEN>>,
     /// Attributes at pixel x.
     a_z: DFF<Bits<Z_ACC>>,
@@ -204,7 +215,8 @@ impl Logic for Span {
         // being taken (whether the walk's pixel is sent or not: that is not on this path);
         // a command is taken when idle or in the walk's last cycle.
         self.advance.next = self.busy.q.val() & (!self.o_valid.q.val() | self.out.ready.val());
-        self.ready.next = !self.busy.q.val() | (self.at_last.q.val() & self.advance.val());
+        self.ends.next = self.drop.q.val() | self.at_last.q.val();
+        self.ready.next = !self.busy.q.val() | (self.ends.val() & self.advance.val());
         self.inp.ready.next = self.ready.val();
         self.accept.next = self.inp.valid.val() & self.ready.val();
         if self.out.ready.val() {
@@ -218,7 +230,7 @@ impl Logic for Span {
             self.o_rgb0.d.next = self.rgb0.val();
             self.o_rgb1.d.next = self.rgb1.val();
             self.o_rgb2.d.next = self.rgb2.val();
-            if self.at_last.q.val() {
+            if self.ends.val() {
                 self.busy.d.next = false;
             } else {
                 self.x.d.next = self.x_next.val();
@@ -253,14 +265,19 @@ impl Logic for Span {
         {
             self.dropped.next = true;
         }
+        self.last_column.next = self.width_x.val() - 1;
+        self.xr_off.next = self.clip_x.on.val() & (self.inp.xr.val() >= self.width_x.val());
         if self.xl_neg.neg.val() & self.clip_x.on.val() {
             self.x_first.next = self.inp.xr.val();
             self.x_last.next = 0.into();
+            self.one_pixel.next = self.inp.xr.val() == 0;
         } else {
             self.x_first.next = self.inp.xl.val();
             self.x_last.next = self.inp.xr.val();
-            if self.clip_x.on.val() & (self.inp.xr.val() >= self.width_x.val()) {
-                self.x_last.next = self.width_x.val() - 1;
+            self.one_pixel.next = self.inp.xl.val() == self.inp.xr.val();
+            if self.xr_off.val() {
+                self.x_last.next = self.last_column.val();
+                self.one_pixel.next = self.inp.xl.val() == self.last_column.val();
             }
         }
         if self.accept.val() {
@@ -268,7 +285,7 @@ impl Logic for Span {
             self.drop.d.next = self.dropped.val();
             self.x.d.next = self.x_first.val();
             self.last.d.next = self.x_last.val();
-            self.at_last.d.next = self.dropped.val() | (self.x_first.val() == self.x_last.val());
+            self.at_last.d.next = self.one_pixel.val();
             self.y.d.next = self.inp.y.val();
             self.d_z.d.next = bit_cast::<Z_ACC, DZ>(self.inp.ddx_z.val());
             self.d_c0.d.next = bit_cast::<C_ACC, DC>(self.inp.ddx_c0.val());

@@ -14,36 +14,6 @@ pub const SPAN_FIFO: usize = 4;
 const POINTER: usize = 2;
 const _: () = assert!(SPAN_FIFO == 1 << POINTER, "the span FIFO's pointers wrap at 2^POINTER entries");
 
-/// Whether a `D`-deep FIFO holding `count` entries is `full` or `empty`. (Alone in its
-/// module, so that these outputs depend on the registered count only: Verilator orders a
-/// module's logic as one block, and with the pushes and pops beside them the handshake
-/// with the edge walk would look like a combinational loop.)
-#[derive(LogicBlock, Blank)]
-pub struct FifoLevel<const D: usize> {
-    pub count: Signal<In, Bits<3>>,
-    pub full: Signal<Out, Bit>,
-    pub empty: Signal<Out, Bit>,
-    /// One entry held: the head the only one.
-    pub one: Signal<Out, Bit>,
-    depth: Constant<Bits<3>>,
-}
-
-impl<const D: usize> Default for FifoLevel<D> {
-    fn default() -> Self {
-        assert!((1..8).contains(&D), "FifoLevel<{D}>: 1 to 7 entries");
-        FifoLevel { depth: Constant::new(bits(D as u64)), ..FifoLevel::blank() }
-    }
-}
-
-impl<const D: usize> Logic for FifoLevel<D> {
-    #[hdl_gen]
-    fn update(&mut self) {
-        self.full.next = self.count.val() == self.depth.val();
-        self.empty.next = self.count.val() == 0;
-        self.one.next = self.count.val() == 1;
-    }
-}
-
 /// One field of a `D`-deep FIFO held as a ring: entry `wr` is written while `we` is high,
 /// and `head` is entry `rd`, held in a register of its own. The entries' write enables
 /// come from the FIFO's input side and its registered pointer only, never from the
@@ -108,7 +78,7 @@ impl<const W: usize, const D: usize> Logic for FifoLane<W, D> {
 /// The span command FIFO between the edge walk and span (`model::cycles`: "a 4-deep FIFO
 /// before it"): `SpanCmd` on the links `inp` and `out`. Empty, it passes a command straight
 /// through in the same cycle; `inp.ready` is low only when full.
-#[derive(LogicBlock, Default)]
+#[derive(LogicBlock, Blank)]
 pub struct SpanFifo {
     pub clock: Signal<In, Clock>,
     /// The commands in; `inp.ready` low only when full.
@@ -117,9 +87,18 @@ pub struct SpanFifo {
     pub out: SpanCmdSource,
     /// No command held.
     pub empty: Signal<Out, Bit>,
-    /// Entries held, and whether that is all or none.
+    /// Entries held, and whether that is all, some or one: the flags are registers of
+    /// their own, set from the count's next value, so that the output's multiplexer and the
+    /// handshakes start at a register and not at a comparison of the count (raster_top's
+    /// critical path at stop 62: the count's comparison with 0 into the multiplexer, then
+    /// span's tests of the command, 12.5 ns).
     count: DFF<Bits<3>>,
-    level: FifoLevel<SPAN_FIFO>,
+    full: DFF<Bit>,
+    held: DFF<Bit>,
+    one: DFF<Bit>,
+    count_next: Signal<Local, Bits<3>>,
+    /// [`SPAN_FIFO`], for `full`.
+    depth: Constant<Bits<3>>,
     /// The entry the next push writes, and the head's: [`POINTER`] bits, wrapping.
     wr: DFF<Bits<POINTER>>,
     rd: DFF<Bits<POINTER>>,
@@ -147,6 +126,12 @@ pub struct SpanFifo {
     take_next: Signal<Local, Bit>,
 }
 
+impl Default for SpanFifo {
+    fn default() -> Self {
+        SpanFifo { depth: Constant::new(bits(SPAN_FIFO as u64)), ..SpanFifo::blank() }
+    }
+}
+
 /// `SpanFifo`'s kernel, with lane `$f` holding field `$f` of the span command (each field
 /// of `links::SpanCmdSink`): out goes its head, or the input itself when the FIFO is empty. (A macro writes the fifteen lanes out before
 /// `#[hdl_gen]` reads the kernel.)
@@ -155,33 +140,37 @@ macro_rules! span_fifo_logic {
         impl Logic for SpanFifo {
             #[hdl_gen]
             fn update(&mut self) {
-                dff_setup!(self, clock, count, wr, rd);
-                self.level.count.next = self.count.q.val();
-                self.inp.ready.next = !self.level.full.val();
-                self.out.valid.next = !self.level.empty.val() | self.inp.valid.val();
-                self.empty.next = self.level.empty.val();
-                self.we.next = self.inp.valid.val() & !self.level.full.val();
+                dff_setup!(self, clock, count, full, held, one, wr, rd);
+                self.inp.ready.next = !self.full.q.val();
+                self.out.valid.next = self.held.q.val() | self.inp.valid.val();
+                self.empty.next = !self.held.q.val();
+                self.we.next = self.inp.valid.val() & !self.full.q.val();
                 // Empty and taken at once: the command passes straight through (entry `wr`
                 // is written all the same, and left behind).
-                self.push.next = self.we.val() & !(self.level.empty.val() & self.out.ready.val());
-                self.pop.next = !self.level.empty.val() & self.out.ready.val();
+                self.push.next = self.we.val() & !(!self.held.q.val() & self.out.ready.val());
+                self.pop.next = self.held.q.val() & self.out.ready.val();
                 // The head register: the input while empty or as the one entry leaves (the
                 // input is then the entry behind it, if any), else entry `rd + 1` as the
                 // head leaves.
-                self.take_din.next = self.level.empty.val() | (self.level.one.val() & self.out.ready.val());
-                self.take_next.next = self.pop.val() & !self.level.one.val();
+                self.take_din.next = !self.held.q.val() | (self.one.q.val() & self.out.ready.val());
+                self.take_next.next = self.pop.val() & !self.one.q.val();
                 if self.push.val() {
                     self.wr.d.next = self.wr.q.val() + 1;
                 }
                 if self.pop.val() {
                     self.rd.d.next = self.rd.q.val() + 1;
                 }
+                self.count_next.next = self.count.q.val();
                 if self.push.val() & !self.pop.val() {
-                    self.count.d.next = self.count.q.val() + 1;
+                    self.count_next.next = self.count.q.val() + 1;
                 }
                 if self.pop.val() & !self.push.val() {
-                    self.count.d.next = self.count.q.val() - 1;
+                    self.count_next.next = self.count.q.val() - 1;
                 }
+                self.count.d.next = self.count_next.val();
+                self.full.d.next = self.count_next.val() == self.depth.val();
+                self.held.d.next = self.count_next.val() != 0;
+                self.one.d.next = self.count_next.val() == 1;
                 $(
                     self.$f.clock.next = self.clock.val();
                     self.$f.we.next = self.we.val();
@@ -191,7 +180,7 @@ macro_rules! span_fifo_logic {
                     self.$f.take_next.next = self.take_next.val();
                     self.$f.din.next = self.inp.$f.val();
                     self.out.$f.next = self.$f.head.val();
-                    if self.level.empty.val() {
+                    if !self.held.q.val() {
                         self.out.$f.next = self.inp.$f.val();
                     }
                 )*
