@@ -21,7 +21,7 @@ export CARGO_INCREMENTAL=0
 # crate (the build's longest), are the soak's.
 # shellcheck disable=SC2034 # used by the scripts that source this file
 features=(--no-default-features)
-# Verilated models' per-cycle code at -O1 rather than Verilator's -Os (crates/sim/src/verilator.rs,
+# Verilated models' per-cycle code at -O1 rather than -O2 (crates/sim/src/verilator.rs,
 # EDGEPAINT_MODEL_OPT): the test command builds some sixty models cold, and -O1 compiles a
 # large one's code a third faster (raster_top's: 3.9 s against 5.8); the tests do not notice
 # its halved speed. Part of each model's cache key, so these models never serve

@@ -168,6 +168,9 @@ pub struct RasterTopVl {
     /// `mem$wr_z` and `mem$wr_rgb`.
     lanes: usize,
     words: [Vec<u64>; 3],
+    /// The triangle last driven on `inp$v*`: a triangle is offered for many cycles, and its
+    /// 21 ports are driven again only when it changes.
+    tri: Option<[Vtx; 3]>,
 }
 
 impl RasterTopVl {
@@ -191,6 +194,7 @@ impl RasterTopVl {
             outputs: outputs.try_into().expect("ten outputs"),
             vl,
             build,
+            tri: None,
         }
     }
 
@@ -220,11 +224,14 @@ impl Cycle for RasterTopVl {
         let [rd_words, z_words, rgb_words] = &mut self.words;
         pack_words(&d.rd_z, depth, self.lanes, rd_words);
         vl.set_words(rd_z, rd_words);
-        for (v, ids) in d.tri.iter().zip(&self.vertices) {
-            // Two's complement, cut to the port's width by `set_u64`.
-            for (id, x) in ids.iter().zip([v.x, v.y, v.z, v.c[0], v.c[1], v.c[2], v.iw]) {
-                vl.set_u64(*id, x as u64);
+        if self.tri != Some(d.tri) {
+            for (v, ids) in d.tri.iter().zip(&self.vertices) {
+                // Two's complement, cut to the port's width by `set_u64`.
+                for (id, x) in ids.iter().zip([v.x, v.y, v.z, v.c[0], v.c[1], v.c[2], v.iw]) {
+                    vl.set_u64(*id, x as u64);
+                }
             }
+            self.tri = Some(d.tri);
         }
         vl.eval();
         let [inp_ready, verdict_valid, verdict_code, done, rd_en, rd_addr, wr_en, wr_addr, wr_z, wr_rgb] = self.outputs;

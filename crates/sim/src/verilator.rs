@@ -46,18 +46,23 @@ const SHIM_VERSION: u32 = 2;
 const VERILATOR_FLAGS: &[&str] = &["--cc", "-sv", "--build", "-CFLAGS", "-fPIC", "-MAKEFLAGS", "OPT_SLOW=-O0"];
 
 /// The environment variable that sets the C++ optimisation of a model's code run every cycle
-/// (Verilator's `OPT_FAST`; its default, -Os, when unset). The test command sets -O1
+/// (Verilator's `OPT_FAST`), [`MODEL_OPT`] when unset. The test command sets -O1
 /// (`scripts/test-build-env.sh`): raster_top's model then compiles in 3.9 s rather than 5.8
 /// and simulates at about half the speed, which its tests, most of them in rust-hdl's far
-/// slower simulator too, do not notice. `render --engine rtl` and the benches keep -Os.
+/// slower simulator too, do not notice.
 const MODEL_OPT_VAR: &str = "EDGEPAINT_MODEL_OPT";
 
-/// The optimisation [`MODEL_OPT_VAR`] asks for, if any (`value`: the variable's value).
-fn model_opt(value: Option<&str>) -> Result<Option<&str>, String> {
+/// The per-cycle code's optimisation when [`MODEL_OPT_VAR`] is unset (`render --engine
+/// rtl`, the benches): -O2, under which raster_top's model steps about twice as fast as at
+/// Verilator's own default, -Os (README, "Frame simulation").
+const MODEL_OPT: &str = "-O2";
+
+/// The optimisation [`MODEL_OPT_VAR`] asks for (`value`: the variable's value).
+fn model_opt(value: Option<&str>) -> Result<&str, String> {
     match value {
-        None | Some("") => Ok(None),
-        Some(o @ ("-O0" | "-O1" | "-O2" | "-O3" | "-Os")) => Ok(Some(o)),
-        Some(o) => Err(format!("{MODEL_OPT_VAR} is {o:?}: it takes -O0, -O1, -O2, -O3 or -Os (or unset: -Os)")),
+        None | Some("") => Ok(MODEL_OPT),
+        Some(o @ ("-O0" | "-O1" | "-O2" | "-O3" | "-Os")) => Ok(o),
+        Some(o) => Err(format!("{MODEL_OPT_VAR} is {o:?}: it takes -O0, -O1, -O2, -O3 or -Os (or unset: {MODEL_OPT})")),
     }
 }
 
@@ -219,6 +224,7 @@ impl Verilated {
                 ports: self.ports.clone(),
                 index,
                 words: Vec::new(),
+                driven: vec![None; self.ports.len()],
             })
         }
     }
@@ -316,25 +322,15 @@ fn runtime(version: &str) -> Result<PathBuf, String> {
 }
 
 /// Verilates `file` with `shim` in a directory of this thread's own, compiling only the
-/// model's classes (its per-cycle code at optimisation `opt`, Verilator's default if none),
+/// model's classes (its per-cycle code at optimisation `opt`),
 /// links them with the `runtime` into a shared library and renames it to `lib` (in `dir`).
-fn build(
-    unit: &str,
-    file: &Path,
-    shim: &str,
-    opt: Option<&str>,
-    runtime: &Path,
-    dir: &Path,
-    lib: &Path,
-) -> Result<(), String> {
+fn build(unit: &str, file: &Path, shim: &str, opt: &str, runtime: &Path, dir: &Path, lib: &Path) -> Result<(), String> {
     let work = work_dir_beside(dir)?;
     let shim_file = work.join("shim.cpp");
     std::fs::write(&shim_file, shim).map_err(|e| format!("writing {}: {e}", shim_file.display()))?;
     let archive = format!("libV{unit}.a");
     let mut verilator = verilator(&work, &archive);
-    if let Some(o) = opt {
-        verilator.args(["-MAKEFLAGS", &format!("OPT_FAST={o}")]);
-    }
+    verilator.args(["-MAKEFLAGS", &format!("OPT_FAST={opt}")]);
     verilator.args(["--top-module", unit]).arg(file).arg(&shim_file);
     run(&mut verilator, &format!("Verilating {}", file.display()))?;
     let linked = work.join(format!("libV{unit}.so"));
@@ -371,6 +367,10 @@ pub struct VlSim {
     ports: Vec<Port>,
     index: HashMap<String, PortId>,
     words: Vec<u64>,
+    /// The words last driven on each input (none yet: `None`), so that driving an input
+    /// with the value it holds costs no call into the model (a frame's harness drives
+    /// every input every cycle, most of them unchanged: 13% of a frame's time before).
+    driven: Vec<Option<Vec<u64>>>,
 }
 
 impl Drop for VlSim {
@@ -400,7 +400,7 @@ impl VlSim {
         let p = &self.ports[id.0 as usize];
         debug_assert!(p.dir == PortDir::In && p.width <= 64, "{}: {} is not a narrow input", self.unit, p.name);
         let masked = if p.width == 64 { v } else { v & ((1 << p.width) - 1) };
-        (self.api.set)(self.handle, id.0, &masked);
+        self.drive(id, &[masked]);
     }
 
     /// Drives input `id` (65 to 128 bits wide) with the low bits of `v`.
@@ -408,15 +408,27 @@ impl VlSim {
         let p = &self.ports[id.0 as usize];
         debug_assert!(p.dir == PortDir::In && (65..=128).contains(&p.width), "{}: {}", self.unit, p.name);
         let masked = if p.width == 128 { v } else { v & ((1 << p.width) - 1) };
-        let words = [masked as u64, (masked >> 64) as u64];
-        (self.api.set)(self.handle, id.0, words.as_ptr());
+        self.drive(id, &[masked as u64, (masked >> 64) as u64]);
     }
 
     /// Drives input `id` with the little-endian words `words` (as many as its width needs).
     pub fn set_words(&mut self, id: PortId, words: &[u64]) {
         let p = &self.ports[id.0 as usize];
         assert!(p.dir == PortDir::In && words.len() == p.width.div_ceil(64), "{}: {}", self.unit, p.name);
+        self.drive(id, words);
+    }
+
+    /// Drives input `id` with `words` (as many as its width needs) unless it holds them.
+    fn drive(&mut self, id: PortId, words: &[u64]) {
+        let slot = &mut self.driven[id.0 as usize];
+        if slot.as_deref() == Some(words) {
+            return;
+        }
         (self.api.set)(self.handle, id.0, words.as_ptr());
+        match slot {
+            Some(held) => held.copy_from_slice(words),
+            None => *slot = Some(words.to_vec()),
+        }
     }
 
     /// Reads port `id` into `words` (as many as its width needs), little-endian.
@@ -461,7 +473,7 @@ impl Sim for VlSim {
     fn set(&mut self, pin: &str, value: &Value) {
         let (id, width) = self.checked(pin, PortDir::In);
         assert_eq!(value.width(), width, "{}: {pin} is {width} bits wide", self.unit);
-        (self.api.set)(self.handle, id.0, value.words().as_ptr());
+        self.drive(id, value.words());
     }
 
     fn settle(&mut self) {
@@ -503,14 +515,14 @@ mod tests {
         (target.clone(), target.join("release").join("edgepaint"), root)
     }
 
-    /// EDGEPAINT_MODEL_OPT: unset or empty is Verilator's default; a level is passed on;
-    /// anything else is an error naming the variable and what it takes.
+    /// EDGEPAINT_MODEL_OPT: unset or empty is -O2; a level is passed on; anything else is an
+    /// error naming the variable and what it takes.
     #[test]
     fn model_opt_takes_a_level_or_nothing() {
-        assert_eq!(model_opt(None), Ok(None));
-        assert_eq!(model_opt(Some("")), Ok(None));
-        assert_eq!(model_opt(Some("-O1")), Ok(Some("-O1")));
-        assert_eq!(model_opt(Some("-Os")), Ok(Some("-Os")));
+        assert_eq!(model_opt(None), Ok("-O2"));
+        assert_eq!(model_opt(Some("")), Ok("-O2"));
+        assert_eq!(model_opt(Some("-O1")), Ok("-O1"));
+        assert_eq!(model_opt(Some("-Os")), Ok("-Os"));
         for bad in ["O1", "-O1 -march=native", "-Ofast", "fast"] {
             let e = model_opt(Some(bad)).unwrap_err();
             assert!(e.contains("EDGEPAINT_MODEL_OPT") && e.contains(bad) && e.contains("-O1"), "{e}");
