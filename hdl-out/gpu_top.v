@@ -5493,7 +5493,6 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
     
     // Local signals
     reg  [2:0] count_next;
-    reg  we;
     reg  push;
     reg  pop;
     reg  take_din;
@@ -5696,10 +5695,9 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         wr$d = wr$q;
         rd$d = rd$q;
         inp$ready = ~full$q;
-        out$valid = held$q | inp$valid;
+        out$valid = held$q;
         empty = ~held$q;
-        we = inp$valid & ~full$q;
-        push = we & ~(~held$q & out$ready);
+        push = inp$valid & ~full$q;
         pop = held$q & out$ready;
         take_din = ~held$q | (one$q & out$ready);
         take_next = pop & ~one$q;
@@ -5721,170 +5719,125 @@ module gpu_top$core$fifo(clock,inp$valid,inp$ready,inp$y,inp$xl,inp$xr,inp$left_
         held$d = count_next != 32'h0;
         one$d = count_next == 32'h1;
         y$clock = clock;
-        y$we = we;
+        y$we = push;
         y$wr = wr$q;
         y$rd = rd$q;
         y$take_din = take_din;
         y$take_next = take_next;
         y$din = inp$y;
         out$y = y$head;
-        if (~held$q) begin
-            out$y = inp$y;
-        end
         xl$clock = clock;
-        xl$we = we;
+        xl$we = push;
         xl$wr = wr$q;
         xl$rd = rd$q;
         xl$take_din = take_din;
         xl$take_next = take_next;
         xl$din = inp$xl;
         out$xl = xl$head;
-        if (~held$q) begin
-            out$xl = inp$xl;
-        end
         xr$clock = clock;
-        xr$we = we;
+        xr$we = push;
         xr$wr = wr$q;
         xr$rd = rd$q;
         xr$take_din = take_din;
         xr$take_next = take_next;
         xr$din = inp$xr;
         out$xr = xr$head;
-        if (~held$q) begin
-            out$xr = inp$xr;
-        end
         left_z$clock = clock;
-        left_z$we = we;
+        left_z$we = push;
         left_z$wr = wr$q;
         left_z$rd = rd$q;
         left_z$take_din = take_din;
         left_z$take_next = take_next;
         left_z$din = inp$left_z;
         out$left_z = left_z$head;
-        if (~held$q) begin
-            out$left_z = inp$left_z;
-        end
         left_c0$clock = clock;
-        left_c0$we = we;
+        left_c0$we = push;
         left_c0$wr = wr$q;
         left_c0$rd = rd$q;
         left_c0$take_din = take_din;
         left_c0$take_next = take_next;
         left_c0$din = inp$left_c0;
         out$left_c0 = left_c0$head;
-        if (~held$q) begin
-            out$left_c0 = inp$left_c0;
-        end
         left_c1$clock = clock;
-        left_c1$we = we;
+        left_c1$we = push;
         left_c1$wr = wr$q;
         left_c1$rd = rd$q;
         left_c1$take_din = take_din;
         left_c1$take_next = take_next;
         left_c1$din = inp$left_c1;
         out$left_c1 = left_c1$head;
-        if (~held$q) begin
-            out$left_c1 = inp$left_c1;
-        end
         left_c2$clock = clock;
-        left_c2$we = we;
+        left_c2$we = push;
         left_c2$wr = wr$q;
         left_c2$rd = rd$q;
         left_c2$take_din = take_din;
         left_c2$take_next = take_next;
         left_c2$din = inp$left_c2;
         out$left_c2 = left_c2$head;
-        if (~held$q) begin
-            out$left_c2 = inp$left_c2;
-        end
         right_z$clock = clock;
-        right_z$we = we;
+        right_z$we = push;
         right_z$wr = wr$q;
         right_z$rd = rd$q;
         right_z$take_din = take_din;
         right_z$take_next = take_next;
         right_z$din = inp$right_z;
         out$right_z = right_z$head;
-        if (~held$q) begin
-            out$right_z = inp$right_z;
-        end
         right_c0$clock = clock;
-        right_c0$we = we;
+        right_c0$we = push;
         right_c0$wr = wr$q;
         right_c0$rd = rd$q;
         right_c0$take_din = take_din;
         right_c0$take_next = take_next;
         right_c0$din = inp$right_c0;
         out$right_c0 = right_c0$head;
-        if (~held$q) begin
-            out$right_c0 = inp$right_c0;
-        end
         right_c1$clock = clock;
-        right_c1$we = we;
+        right_c1$we = push;
         right_c1$wr = wr$q;
         right_c1$rd = rd$q;
         right_c1$take_din = take_din;
         right_c1$take_next = take_next;
         right_c1$din = inp$right_c1;
         out$right_c1 = right_c1$head;
-        if (~held$q) begin
-            out$right_c1 = inp$right_c1;
-        end
         right_c2$clock = clock;
-        right_c2$we = we;
+        right_c2$we = push;
         right_c2$wr = wr$q;
         right_c2$rd = rd$q;
         right_c2$take_din = take_din;
         right_c2$take_next = take_next;
         right_c2$din = inp$right_c2;
         out$right_c2 = right_c2$head;
-        if (~held$q) begin
-            out$right_c2 = inp$right_c2;
-        end
         ddx_z$clock = clock;
-        ddx_z$we = we;
+        ddx_z$we = push;
         ddx_z$wr = wr$q;
         ddx_z$rd = rd$q;
         ddx_z$take_din = take_din;
         ddx_z$take_next = take_next;
         ddx_z$din = inp$ddx_z;
         out$ddx_z = ddx_z$head;
-        if (~held$q) begin
-            out$ddx_z = inp$ddx_z;
-        end
         ddx_c0$clock = clock;
-        ddx_c0$we = we;
+        ddx_c0$we = push;
         ddx_c0$wr = wr$q;
         ddx_c0$rd = rd$q;
         ddx_c0$take_din = take_din;
         ddx_c0$take_next = take_next;
         ddx_c0$din = inp$ddx_c0;
         out$ddx_c0 = ddx_c0$head;
-        if (~held$q) begin
-            out$ddx_c0 = inp$ddx_c0;
-        end
         ddx_c1$clock = clock;
-        ddx_c1$we = we;
+        ddx_c1$we = push;
         ddx_c1$wr = wr$q;
         ddx_c1$rd = rd$q;
         ddx_c1$take_din = take_din;
         ddx_c1$take_next = take_next;
         ddx_c1$din = inp$ddx_c1;
         out$ddx_c1 = ddx_c1$head;
-        if (~held$q) begin
-            out$ddx_c1 = inp$ddx_c1;
-        end
         ddx_c2$clock = clock;
-        ddx_c2$we = we;
+        ddx_c2$we = push;
         ddx_c2$wr = wr$q;
         ddx_c2$rd = rd$q;
         ddx_c2$take_din = take_din;
         ddx_c2$take_next = take_next;
         ddx_c2$din = inp$ddx_c2;
         out$ddx_c2 = ddx_c2$head;
-        if (~held$q) begin
-            out$ddx_c2 = inp$ddx_c2;
-        end
     end
     
 endmodule // gpu_top$core$fifo

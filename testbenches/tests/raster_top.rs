@@ -529,10 +529,14 @@ fn raster_top_latency_of_one_triangle() {
     let mut dut = model();
     let (prep, out) = check("one triangle", &mut dut, &l, Cull::None, ready_memory(&mut |_| true));
     let r = Report::of(&out, &prep);
-    // cull_sort 1 + setup + edge walk 2 + span 1: the first pixel enters pixel_out.
+    // cull_sort + setup + edge walk + the span FIFO + span: the first pixel enters pixel_out.
     let setup = model::cycles::setup_latency(&Default::default()) as u64;
     let first =
-        model::cull_sort::LATENCY as u64 + setup + model::edge_walk::LATENCY as u64 + model::span::LATENCY as u64;
+        [model::cull_sort::LATENCY, model::edge_walk::LATENCY, model::cycles::SPAN_FIFO_LATENCY, model::span::LATENCY]
+            .iter()
+            .map(|&c| c as u64)
+            .sum::<u64>()
+            + setup;
     assert_eq!(r.latency, Some((first, first, first)), "{r:?}");
     assert_eq!(r.cycles, r.predicted);
 }

@@ -17,6 +17,8 @@
 //!   latency ([`setup_timing`], the schedule its RTL runs);
 //! * `edge_walk`: first span command [`edge_walk::LATENCY`] cycles after it takes
 //!   a triangle, then one scanline per cycle; it stalls while the span FIFO is full;
+//! * the span FIFO: a command pushed in cycle t is offered from its head register in
+//!   t + [`SPAN_FIFO_LATENCY`] (`rtl::span_fifo`: no pass-through);
 //! * `span`: one cycle per pixel walked, one for a dropped span, the walk starting the
 //!   cycle after the command is taken; each pixel leaves [`span::LATENCY`] - 1 cycles
 //!   after its walk cycle (latency 2: the pixel register);
@@ -36,6 +38,10 @@ use crate::triangle_setup::schedule::Schedule;
 use crate::{cull_sort, edge_walk, pixel_out, se, se_cmd, span, vector};
 
 pub mod textured;
+
+/// Cycles from a span command pushed into the span FIFO to its offer from the FIFO's head
+/// register (`rtl::span_fifo`, which has no pass-through).
+pub const SPAN_FIFO_LATENCY: u32 = 1;
 
 /// Hardware parameters the cycle model depends on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -371,7 +377,9 @@ fn front_end_frame(work: &[Work], t: &Timing, taker: &mut impl SpanTaker) -> Fra
                 if span_starts.len() >= fifo {
                     now = now.max(span_starts[span_starts.len() - fifo]);
                 }
-                span_starts.push(taker.take(now + 1, span, &mut last, &mut out.span_busy));
+                // Pushed into the FIFO in `now`, offered from its head SPAN_FIFO_LATENCY later.
+                let offered = now + SPAN_FIFO_LATENCY as u64;
+                span_starts.push(taker.take(offered + 1, span, &mut last, &mut out.span_busy));
             }
             now += 1;
         }
@@ -649,43 +657,46 @@ mod tests {
 
     #[test]
     fn cycles_one_triangle_through_the_scanline_pipeline() {
-        // Taken in cycle 0, culled out at 3; setup done at 3 + 32 = 35; the walk emits at
-        // 37, 38, 39; span walks each from 1 cycle later or when free: 38..43, 43..48,
-        // 48..53; the last pixel leaves span's pixel register in 53 and is written 2 cycles
-        // after, in cycle 55: 56 cycles.
+        // Taken in cycle 0, culled out at 3; setup done at 3 + 32 = 35; the walk pushes
+        // into the span FIFO in 37, 38, 39, each offered from its head a cycle later; span
+        // walks each from 2 cycles after its push or when free: 39..44, 44..49, 49..54; the
+        // last pixel leaves span's pixel register in 54 and is written 2 cycles after, in
+        // cycle 56: 57 cycles.
         let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], ..Work::default() };
         let c = scanline_frame(std::slice::from_ref(&w), &l5());
-        assert_eq!((c.total, c.span_busy, c.triangles), (56, 15, 1));
+        assert_eq!((c.total, c.span_busy, c.triangles), (57, 15, 1));
         // A culled triangle ahead costs one cycle of cull_sort only.
         let culled = Work::default();
-        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &l5()).total, 57);
+        assert_eq!(scanline_frame(&[culled.clone(), w.clone()], &l5()).total, 58);
         // Behind a triangle waiting for setup, culled ones wait too: the first triangle
         // leaves cull_sort for setup in cycle 3, the second (which crosses no scanline)
         // arrives in the output register at 4 and leaves in 13, when the first is in its
         // cycle 10 (II); the first two culled ones, taken at 2 and 3, wait in stages 1 and
         // 2 (nothing more is taken), then the 45 culled ones go through cull_sort, one per
         // cycle, the last one's verdict in cycle 13 + 45 (after the first triangle's last
-        // pixel, 56).
+        // pixel, 57).
         let mut frame = vec![w.clone(), Work { passed_cull: true, ..Work::default() }];
         frame.extend(std::iter::repeat_n(culled, 45));
         assert_eq!(scanline_frame(&frame, &l5()).total, 13 + 45);
-        // With a 4-deep FIFO the walk runs ahead and span never waits: walking from 38
+        // With a 4-deep FIFO the walk runs ahead and span never waits: walking from 39
         // for 53 cycles, the last pixel out of the pixel register 1 later, written 2 later.
         let long = Work { scanlines: vec![full(50), full(1), full(1), None, full(1)], ..w.clone() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&long), &l5()).total, 38 + 53 + 1 + 2);
-        // A one-deep FIFO holds the walk until span takes each command; the last
-        // command is emitted only at 90, reaches span at 91: one idle cycle.
+        assert_eq!(scanline_frame(std::slice::from_ref(&long), &l5()).total, 39 + 53 + 1 + 2);
+        // A one-deep FIFO holds the walk until span takes each command: the second, pushed
+        // in 38, is taken in 88 as the first span's walk ends and walked in 89; the third can
+        // be pushed only in 89 (the FIFO empties the cycle after its head is taken), offered
+        // in 90 and walked in 91; the last, pushed in 91, is walked in 93: two idle cycles.
         let one_deep = Timing { span_fifo: 1, ..l5() };
-        assert_eq!(scanline_frame(&[long], &one_deep).total, 38 + 53 + 1 + 1 + 2);
+        assert_eq!(scanline_frame(&[long], &one_deep).total, 39 + 53 + 2 + 1 + 2);
         // Spans that end on pixels sent nowhere (off screen, out of the depth range, or
         // dropped): the frame ends when span is done, or 4 cycles after the last pixel's
         // walk cycle (out of the pixel register, into pixel_out, written).
         let mut tail = w.clone();
         tail.scanlines[2] = Some(SpanWork { cycles: 5, unsent: vec![2, 3, 4], ..SpanWork::default() });
-        assert_eq!(scanline_frame(&[tail.clone()], &l5()).total, 53);
+        assert_eq!(scanline_frame(&[tail.clone()], &l5()).total, 54);
         tail.scanlines[2] = Some(SpanWork { cycles: 1, unsent: vec![0], ..SpanWork::default() });
-        // Dropped: span done at 49, the pixel walked in 47 out of span in 48, written in 50.
-        assert_eq!(scanline_frame(&[tail], &l5()).total, 51);
+        // Dropped: span done at 50, the pixel walked in 48 out of span in 49, written in 51.
+        assert_eq!(scanline_frame(&[tail], &l5()).total, 52);
     }
 
     /// The memory stalling (`mem$ready` low): `pixel_out` and span's pixel register hold,
@@ -693,23 +704,23 @@ mod tests {
     #[test]
     fn cycles_scanline_frame_behind_a_stalling_memory() {
         // The frame of `cycles_one_triangle_through_the_scanline_pipeline`: spans walked in
-        // 38..42, 43..47, 48..52, each pixel in the register from the cycle after its walk
-        // cycle and taken there; the last tested in 54, written in 55, done in 56.
+        // 39..43, 44..48, 49..53, each pixel in the register from the cycle after its walk
+        // cycle and taken there; the last tested in 55, written in 56, done in 57.
         let w = Work { passed_cull: true, scanlines: vec![full(5), full(5), full(5)], ..Work::default() };
         let stalled = |from: u64, to: u64| {
             scanline_frame_stalled(std::slice::from_ref(&w), &l5(), &move |c| !(from..=to).contains(&c)).total
         };
-        assert_eq!(stalled(1, 0), 56, "never stalled: as scanline_frame");
+        assert_eq!(stalled(1, 0), 57, "never stalled: as scanline_frame");
         // Stalled before the first pixel: nothing waits for the memory.
-        assert_eq!(stalled(10, 38), 56);
-        // Stalled in 44..48: the second span's first pixel (in the register from 44) is
-        // taken in 49, its second walk cycle with it; everything 5 cycles later.
-        assert_eq!(stalled(44, 48), 61);
-        // Stalled in 55 only: the last pixel, taken in 53 and tested in 54, is written in 56.
-        assert_eq!(stalled(55, 55), 57);
-        // Stalled in 40..42 under a first span that sends nothing: its walk goes on (the
-        // register stays empty); the second span's first pixel is walked in 43 and taken in
-        // 44, after the stall: 56 as without it.
+        assert_eq!(stalled(10, 39), 57);
+        // Stalled in 45..49: the second span's first pixel (in the register from 45) is
+        // taken in 50, its second walk cycle with it; everything 5 cycles later.
+        assert_eq!(stalled(45, 49), 62);
+        // Stalled in 56 only: the last pixel, taken in 54 and tested in 55, is written in 57.
+        assert_eq!(stalled(56, 56), 58);
+        // Stalled in 41..43 under a first span that sends nothing: its walk goes on (the
+        // register stays empty); the second span's first pixel is walked in 44 and taken in
+        // 45, after the stall: 57 as without it.
         let quiet = Work {
             scanlines: vec![
                 Some(SpanWork { cycles: 5, unsent: vec![0, 1, 2, 3, 4], ..SpanWork::default() }),
@@ -718,13 +729,13 @@ mod tests {
             ],
             ..w.clone()
         };
-        assert_eq!(scanline_frame(std::slice::from_ref(&quiet), &l5()).total, 56);
-        let quiet_stalled = scanline_frame_stalled(std::slice::from_ref(&quiet), &l5(), &|c| !(40..=42).contains(&c));
-        assert_eq!(quiet_stalled.total, 56);
-        // The same stall under a span that sends: its pixel walked in 39, in the register
-        // from 40, is taken in 43, and each walk cycle after waits for the one before:
-        // walked in 38, 39, 43, 44, 45 instead of 38..42: 3 cycles later.
-        assert_eq!(stalled(40, 42), 59);
+        assert_eq!(scanline_frame(std::slice::from_ref(&quiet), &l5()).total, 57);
+        let quiet_stalled = scanline_frame_stalled(std::slice::from_ref(&quiet), &l5(), &|c| !(41..=43).contains(&c));
+        assert_eq!(quiet_stalled.total, 57);
+        // The same stall under a span that sends: its pixel walked in 40, in the register
+        // from 41, is taken in 44, and each walk cycle after waits for the one before:
+        // walked in 39, 40, 44, 45, 46 instead of 39..43: 3 cycles later.
+        assert_eq!(stalled(41, 43), 60);
     }
 
     #[test]
@@ -735,13 +746,13 @@ mod tests {
         let mut frame = vec![Work::default(), w.clone()];
         frame.extend(std::iter::repeat_n(Work::default(), 30));
         let no_cull = Timing { cull_sort: false, ..l5() };
-        assert_eq!(scanline_frame(&frame, &no_cull).total, 53);
-        // Without pixel_out the frame ends the cycle after span's last fragment (53):
+        assert_eq!(scanline_frame(&frame, &no_cull).total, 54);
+        // Without pixel_out the frame ends the cycle after span's last fragment (54):
         // 2 cycles less than with the depth test and write behind it.
         let no_out = Timing { pixel_out: false, ..l5() };
-        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 54);
+        assert_eq!(scanline_frame(std::slice::from_ref(&w), &no_out).total, 55);
         let neither = Timing { cull_sort: false, pixel_out: false, ..l5() };
-        assert_eq!(scanline_frame(&frame, &neither).total, 51);
+        assert_eq!(scanline_frame(&frame, &neither).total, 52);
     }
 
     /// The vector unit sets the next triangle up while it walks one, its scout finds the

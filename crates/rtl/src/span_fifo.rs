@@ -1,6 +1,9 @@
 //! The span command FIFO between `edge_walk` and `span` in `raster_top` (papers 001 and
-//! 003): [`SPAN_FIFO`] `SpanCmd`s, as `model::cycles::Timing::span_fifo`, passed straight
-//! through when empty. Part of `raster_top` (its model is the cycle model's FIFO).
+//! 003): [`SPAN_FIFO`] `SpanCmd`s, as `model::cycles::Timing::span_fifo`. Its output is
+//! always its head register: a command pushed into an empty FIFO is offered the cycle
+//! after (no pass-through: raster_top's critical path at stop 62 ran from the
+//! pass-through's select across its fifteen fields into span's tests of the command,
+//! 12.5 ns). Part of `raster_top` (its model is the cycle model's FIFO).
 
 use super::links::{SpanCmdSink, SpanCmdSource};
 use super::widths::{C_ACC, DC, DZ, PIXEL, SCREEN, Z_ACC};
@@ -76,14 +79,14 @@ impl<const W: usize, const D: usize> Logic for FifoLane<W, D> {
 }
 
 /// The span command FIFO between the edge walk and span (`model::cycles`: "a 4-deep FIFO
-/// before it"): `SpanCmd` on the links `inp` and `out`. Empty, it passes a command straight
-/// through in the same cycle; `inp.ready` is low only when full.
+/// before it"): `SpanCmd` on the links `inp` and `out`. A command pushed in cycle t is
+/// offered from cycle t + 1, from the head register; `inp.ready` is low only when full.
 #[derive(LogicBlock, Blank)]
 pub struct SpanFifo {
     pub clock: Signal<In, Clock>,
     /// The commands in; `inp.ready` low only when full.
     pub inp: SpanCmdSink,
-    /// The commands out: the head, or the input itself when empty.
+    /// The commands out: the head register.
     pub out: SpanCmdSource,
     /// No command held.
     pub empty: Signal<Out, Bit>,
@@ -117,9 +120,7 @@ pub struct SpanFifo {
     ddx_c0: FifoLane<DC, SPAN_FIFO>,
     ddx_c1: FifoLane<DC, SPAN_FIFO>,
     ddx_c2: FifoLane<DC, SPAN_FIFO>,
-    /// Entry `wr` is written (the input offered and room for it, whether or not it also
-    /// passes straight through).
-    we: Signal<Local, Bit>,
+    /// Entry `wr` is written: the input offered and room for it.
     push: Signal<Local, Bit>,
     pop: Signal<Local, Bit>,
     take_din: Signal<Local, Bit>,
@@ -133,8 +134,8 @@ impl Default for SpanFifo {
 }
 
 /// `SpanFifo`'s kernel, with lane `$f` holding field `$f` of the span command (each field
-/// of `links::SpanCmdSink`): out goes its head, or the input itself when the FIFO is empty. (A macro writes the fifteen lanes out before
-/// `#[hdl_gen]` reads the kernel.)
+/// of `links::SpanCmdSink`): out goes its head. (A macro writes the fifteen lanes out
+/// before `#[hdl_gen]` reads the kernel.)
 macro_rules! span_fifo_logic {
     ($($f:ident),* $(,)?) => {
         impl Logic for SpanFifo {
@@ -142,12 +143,9 @@ macro_rules! span_fifo_logic {
             fn update(&mut self) {
                 dff_setup!(self, clock, count, full, held, one, wr, rd);
                 self.inp.ready.next = !self.full.q.val();
-                self.out.valid.next = self.held.q.val() | self.inp.valid.val();
+                self.out.valid.next = self.held.q.val();
                 self.empty.next = !self.held.q.val();
-                self.we.next = self.inp.valid.val() & !self.full.q.val();
-                // Empty and taken at once: the command passes straight through (entry `wr`
-                // is written all the same, and left behind).
-                self.push.next = self.we.val() & !(!self.held.q.val() & self.out.ready.val());
+                self.push.next = self.inp.valid.val() & !self.full.q.val();
                 self.pop.next = self.held.q.val() & self.out.ready.val();
                 // The head register: the input while empty or as the one entry leaves (the
                 // input is then the entry behind it, if any), else entry `rd + 1` as the
@@ -173,16 +171,13 @@ macro_rules! span_fifo_logic {
                 self.one.d.next = self.count_next.val() == 1;
                 $(
                     self.$f.clock.next = self.clock.val();
-                    self.$f.we.next = self.we.val();
+                    self.$f.we.next = self.push.val();
                     self.$f.wr.next = self.wr.q.val();
                     self.$f.rd.next = self.rd.q.val();
                     self.$f.take_din.next = self.take_din.val();
                     self.$f.take_next.next = self.take_next.val();
                     self.$f.din.next = self.inp.$f.val();
                     self.out.$f.next = self.$f.head.val();
-                    if !self.held.q.val() {
-                        self.out.$f.next = self.inp.$f.val();
-                    }
                 )*
             }
         }
