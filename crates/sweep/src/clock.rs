@@ -26,16 +26,18 @@ pub const MEASURED_MHZ: [(&str, f64); 6] = [
     ("span", 113.5),
     ("pixel_out", 142.2),
 ];
-/// `raster_top`'s ECP5 Fmax at the default design, MHz (LFE5U-45F, router1, seed 1, stop 61:
+/// `raster_top`'s ECP5 Fmax at the default design, MHz (LFE5U-45F, router1, seed 1, stop 63:
 /// 38.3 before stop 54's geometry registers, 55.7 before the multipliers were split, 65.0
 /// before setup's geometry moved with the triangle, 68.5 before the span FIFO's head register
 /// and setup's decoders from the counters' registers, 70.1 before setup's schedule as tokens,
 /// its `run` from a register and span's depth test without its adder, 81.7 before the count's
 /// comparisons moved into setup's geometry word, which took setup off the critical path and
 /// left span's command handshake into the span FIFO's head register, placed worse; 76.9
-/// before span's `at_last` register and the span FIFO's registered flags, which leave span's
-/// tests of a command coming through the FIFO's pass-through multiplexer critical).
-pub const PIPELINE_MHZ: f64 = 79.8;
+/// before span's `at_last` register and the span FIFO's registered flags, which left span's
+/// tests of a command coming through the FIFO's pass-through multiplexer critical; 79.8
+/// before the FIFO lost its pass-through, which leaves setup's normalise critical: the
+/// area's absolute value and its leading-one search into the shift register `nsh`).
+pub const PIPELINE_MHZ: f64 = 83.0;
 
 /// `gpu_top`'s ECP5 Fmax at the default design, MHz, placed and routed whole (LFE5U-85F,
 /// nextpnr's router1; README, "Units"): its critical path is the command parser's (the
