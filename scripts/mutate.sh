@@ -11,9 +11,10 @@
 #   edge_walk       a colour's step up the edge loses the +1 of its two's complement
 #                   (`at + ~inc + up` to `at + ~inc`): one LSB a scanline on upward steps
 #   span            the X clip keeps the pixel at x = width (`x >= width` to `x > width`)
-#   triangle_setup  the first scanline centre of vertex 0 in one of setup's six copies
+#   triangle_setup  the first scanline centre of vertex 0 in setup's geometry (computed
+#                   once per triangle, as it is taken, and handed on from copy to copy)
 #                   rounds a y on a pixel centre up (`y + half - 1` to `y + half`): the
-#                   fill rule's tie, every fifth triangle
+#                   fill rule's tie
 #
 # It edits hdl-out/ in place while it runs (the tests read the committed files) and puts it
 # back on exit: commit nothing from this tree meanwhile.
@@ -40,7 +41,7 @@ trap restore EXIT
 mutations=(
     edge_walk 'edge_walk$cur$c0' 'at_r$d = at_r$q + inc_dir + up;' 'at_r$d = at_r$q + inc_dir;'
     span span 'if (clip_x$on & (x$q >= width_x)) begin' 'if (clip_x$on & (x$q > width_x)) begin'
-    triangle_setup 'triangle_setup$g0' 'cv$0 = ((yn$0 + half_m1) & int_mask) | half;' 'cv$0 = ((yn$0 + half) & int_mask) | half;'
+    triangle_setup 'triangle_setup$geometry' 'cv$0 = ((yn$0 + half_m1) & int_mask) | half;' 'cv$0 = ((yn$0 + half) & int_mask) | half;'
 )
 
 # mutate FILE MODULE FROM TO: replaces FROM by TO once, inside module MODULE of FILE.
